@@ -1,0 +1,62 @@
+#pragma once
+// What the renderers ask of a loaded scene at a given time: world transforms (with animation),
+// bounds, the render camera and the lights, resolved to world space in double precision.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "nimbus/assets/scene.h"
+
+namespace nimbus::assets {
+
+struct Aabb {
+    glm::dvec3 min{std::numeric_limits<double>::infinity()};
+    glm::dvec3 max{-std::numeric_limits<double>::infinity()};
+    bool empty() const { return !(min.x <= max.x && min.y <= max.y && min.z <= max.z); }
+    void extend(const glm::dvec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    void extend(const Aabb& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
+    glm::dvec3 center() const { return 0.5 * (min + max); }
+    glm::dvec3 extent() const { return max - min; }
+};
+
+// Local-to-world matrix of every node at `timeSeconds` (animations clamp outside their key range).
+std::vector<glm::dmat4> computeWorldTransforms(const Scene& scene, double timeSeconds);
+
+// World-space bounds of every mesh instance.
+Aabb meshBounds(const Scene& scene, const std::vector<glm::dmat4>& world);
+
+// A camera placed in the world. `synthesized` when the scene had none and one was made to frame it.
+struct ResolvedCamera {
+    std::string name;
+    Camera params;
+    glm::dmat4 world{1.0};  // camera looks down its local -Z, +Y up (glTF)
+    bool synthesized = false;
+
+    glm::dvec3 position() const { return glm::dvec3(world[3]); }
+    glm::dvec3 forward() const;  // unit, world space
+    glm::dvec3 up() const;       // unit, world space
+    glm::dvec3 right() const;    // unit, world space
+};
+
+// The scene's first camera (lowest node index carrying one), or the camera whose camera name or node
+// name is `name`. With no camera in the scene and no name asked, one is made that frames `frame`
+// (the caller passes mesh bounds plus anything else visible, e.g. media). Throws InputError when
+// `name` matches nothing.
+ResolvedCamera resolveCamera(const Scene& scene, const std::vector<glm::dmat4>& world, std::string_view name,
+                             const Aabb& frame, double aspect);
+
+// A light placed in the world. Directional and spot lights shine along `direction` (node -Z).
+struct ResolvedLight {
+    std::string name;
+    Light params;
+    glm::dvec3 position{0.0};
+    glm::dvec3 direction{0.0, 0.0, -1.0};  // unit; the direction light travels
+    bool synthesized = false;
+};
+
+// Every light in the scene; a scene with none gets the documented default sun (docs/scene-format.md):
+// directional, white, 3 lux, travelling along normalize(-0.4, -1.0, -0.3).
+std::vector<ResolvedLight> resolveLights(const Scene& scene, const std::vector<glm::dmat4>& world);
+
+}  // namespace nimbus::assets

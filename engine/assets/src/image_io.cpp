@@ -1,0 +1,96 @@
+#include "nimbus/assets/image_io.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <OpenImageIO/imageio.h>
+
+#include "nimbus/base/error.h"
+
+namespace nimbus::assets {
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+}  // namespace
+
+float srgbEncode(float linear) {
+    if (!(linear > 0.0f)) return 0.0f;  // also maps NaN to 0 for display
+    if (linear >= 1.0f) return 1.0f;
+    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgbDecode(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+bool isLinearFormat(const std::filesystem::path& file) {
+    const std::string ext = lowerExtension(file);
+    return ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff" || ext == ".pfm";
+}
+
+void writeImage(const std::filesystem::path& file, const RgbImage& image, const ImageWriteOptions& options) {
+    const std::string name = file.string();
+    if (image.width <= 0 || image.height <= 0) throwInputError(name, "", "", "cannot write an empty image");
+    if (file.has_parent_path()) {
+        std::error_code ec;
+        std::filesystem::create_directories(file.parent_path(), ec);
+    }
+    auto out = OIIO::ImageOutput::create(name);
+    if (!out) throwInputError(name, "", "", "no image writer for this file extension (" + OIIO::geterror() + ")");
+
+    const bool linear = isLinearFormat(file);
+    OIIO::ImageSpec spec(image.width, image.height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (linear) {
+        spec.attribute("compression", "zip");
+    } else {
+        spec.attribute("oiio:ColorSpace", "sRGB");
+    }
+    if (!out->open(name, spec)) throwInputError(name, "", "", "cannot open for writing: " + out->geterror());
+
+    bool ok = false;
+    if (linear) {
+        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
+    } else {
+        std::vector<unsigned char> bytes(image.rgb.size());
+        for (std::size_t i = 0; i < bytes.size(); ++i)
+            bytes[i] = static_cast<unsigned char>(std::lround(255.0f * srgbEncode(image.rgb[i] * options.exposure)));
+        ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    }
+    if (!ok) throwInputError(name, "", "", "write failed: " + out->geterror());
+    if (!out->close()) throwInputError(name, "", "", "close failed: " + out->geterror());
+}
+
+RgbImage readImage(const std::filesystem::path& file) {
+    const std::string name = file.string();
+    if (!std::filesystem::exists(file)) throwInputError(name, "", "", "no such file");
+    auto in = OIIO::ImageInput::open(name);
+    if (!in) throwInputError(name, "", "", "cannot read image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
+        throwInputError(name, "", "", "image has no pixels");
+
+    const int channels = spec.nchannels;
+    std::vector<float> pixels(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
+                              static_cast<std::size_t>(channels));
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
+        throwInputError(name, "", "", "cannot decode image: " + in->geterror());
+    const bool floatData = spec.format.basetype == OIIO::TypeDesc::FLOAT || spec.format.basetype == OIIO::TypeDesc::HALF ||
+                           spec.format.basetype == OIIO::TypeDesc::DOUBLE;
+    in->close();
+
+    RgbImage image(spec.width, spec.height);
+    for (std::size_t p = 0; p < image.pixelCount(); ++p) {
+        for (int c = 0; c < 3; ++c) {
+            const float v = pixels[p * static_cast<std::size_t>(channels) + static_cast<std::size_t>(std::min(c, channels - 1))];
+            image.rgb[p * 3 + static_cast<std::size_t>(c)] = floatData ? v : srgbDecode(v);
+        }
+    }
+    return image;
+}
+
+}  // namespace nimbus::assets
