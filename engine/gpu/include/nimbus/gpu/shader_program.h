@@ -1,0 +1,40 @@
+#pragma once
+// GLSL programs built from files under shaders/. Sources may `#include "path.glsl"` (relative to
+// the shaders folder, each file included once per stage); compile errors are reported as
+// file:line with the original file names.
+//
+// Does not: cache binaries, or hot-reload (the editor may add that later).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "nimbus/gpu/gl_objects.h"
+
+namespace nimbus::gpu {
+
+struct ProgramDesc {
+    std::string vertex;    // file names relative to the shader folder; empty = stage absent
+    std::string geometry;
+    std::string fragment;
+    std::string compute;
+    std::vector<std::string> defines;  // "NAME" or "NAME VALUE", inserted after #version
+    std::filesystem::path folder;      // empty means nimbus::shaderDirectory()
+};
+
+// A preprocessed stage: the text GL compiles plus the files it came from (index = #line source number).
+struct PreprocessedSource {
+    std::string text;
+    std::vector<std::string> files;
+};
+
+// Resolves #include and injects defines; throws nimbus::SystemError for a missing file or a cycle.
+PreprocessedSource preprocessShader(const std::filesystem::path& folder, const std::string& file,
+                                    const std::vector<std::string>& defines);
+
+// Rewrites a driver log ("0:12(5): error: ...") with file names ("opaque.frag:12(5): error: ...").
+std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);
+
+// Compiles and links; throws nimbus::SystemError listing every error with file:line.
+Program compileProgram(const ProgramDesc& desc);
+
+}  // namespace nimbus::gpu
