@@ -1,0 +1,99 @@
+#pragma once
+// The frame of DESIGN.md §3 as a frame graph: mesh shadow maps → opaque (+ scene depth) →
+// extensions (the media plugin) → compose into a linear RGBA32F output. Extensions add their own
+// passes before the opaque pass (e.g. light slices that shadow meshes) and after it (the medium).
+//
+// Does not: own the scene or the camera (the caller passes a FrameInput each frame), present to a
+// window (the editor blits output()), or encode images (assets/image_io does).
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "nimbus/assets/scene.h"
+#include "nimbus/assets/scene_queries.h"
+#include "nimbus/assets/image_io.h"
+#include "nimbus/render/frame_data.h"
+#include "nimbus/render/frame_graph.h"
+#include "nimbus/render/gpu_scene.h"
+#include "nimbus/render/light_views.h"
+#include "nimbus/render/texture_pool.h"
+#include "nimbus/render/view.h"
+
+namespace nimbus::render {
+
+// Zero values take the defaults noted.
+struct RenderSettings {
+    int width = 0;           // 0: 1280
+    int height = 0;          // 0: 720
+    int shadowMapSize = 0;   // 0: 2048
+    int pcfRadius = -1;      // −1: 1 (3×3 taps)
+};
+
+struct FrameInput {
+    const GpuScene* gpuScene = nullptr;
+    std::vector<MeshInstance> instances;
+    std::vector<assets::ResolvedLight> lights;
+    assets::ResolvedCamera camera;
+    assets::Environment environment;
+};
+
+// What the passes of one frame share while the graph is set up.
+struct FrameContext {
+    const FrameInput& input;
+    RenderSettings settings;
+    View view;
+    assets::Aabb meshBounds;    // world
+    assets::Aabb shadowBounds;  // world: meshes plus what extensions draw
+    std::vector<std::vector<LightView>> shadowViews;  // per light
+    TransmittanceSlices transmittance;                // filled by an extension before the opaque pass
+    ResourceHandle shadowMap;                         // depth array, one layer per shadow view (may be invalid)
+    ResourceHandle sceneColor;                        // opaque radiance (RGBA32F)
+    ResourceHandle sceneDepth;                        // reversed-Z depth (D32F)
+    ResourceHandle transmittanceSlices;               // set by the extension that fills `transmittance`
+    ResourceHandle mediaColor;                        // set by a media extension: rgb in-scatter, a transmittance
+    const FrameData* frameData = nullptr;
+};
+
+class RenderExtension {
+public:
+    virtual ~RenderExtension() = default;
+    // World bounds of what the extension draws (shadow maps must cover it). Empty: nothing.
+    virtual assets::Aabb bounds() const { return {}; }
+    virtual void beforeOpaque(FrameGraph&, FrameContext&) {}
+    virtual void afterOpaque(FrameGraph&, FrameContext&) {}
+};
+
+class ShadowPass;
+class OpaquePass;
+class ComposePass;
+
+class SceneRenderer {
+public:
+    SceneRenderer();  // compiles the engine's programs; needs a current GL context
+    ~SceneRenderer();
+    SceneRenderer(const SceneRenderer&) = delete;
+    SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+    // Renders one frame into output(). `timer` (optional) receives per-pass timings.
+    void render(const FrameInput& input, const RenderSettings& settings, std::span<RenderExtension* const> extensions,
+                PassTimer* timer = nullptr);
+
+    const gpu::Texture& output() const { return output_; }
+    assets::RgbImage readOutput() const;  // row 0 at the top
+    std::vector<std::string> lastActivePasses() const { return lastPasses_; }
+
+private:
+    std::unique_ptr<ShadowPass> shadowPass_;
+    std::unique_ptr<OpaquePass> opaquePass_;
+    std::unique_ptr<ComposePass> composePass_;
+    FrameData frameData_;
+    TexturePool pool_;
+    gpu::Texture output_;
+    std::vector<std::string> lastPasses_;
+};
+
+// World bounds of the instances' meshes.
+assets::Aabb instanceBounds(const FrameInput& input);
+
+}  // namespace nimbus::render

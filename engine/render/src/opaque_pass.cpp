@@ -1,0 +1,100 @@
+// Opaque meshes, Lambert-shaded with mesh shadows and medium transmittance (shaders/opaque.*).
+// Writes scene colour (linear RGBA32F, cleared to the background radiance) and reversed-Z depth,
+// which later passes read for soft particles and mesh–medium intersections.
+#include "passes.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::render {
+
+OpaquePass::OpaquePass() { program_ = gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag"}); }
+
+void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows) {
+    struct Data {
+        ResourceHandle color, depth, shadowMap, slices;
+    };
+    const int w = context.view.width, h = context.view.height;
+    const auto& data = graph.addPass<Data>(
+        "opaque",
+        [&](PassBuilder& builder, Data& d) {
+            d.color = builder.create("scene_color", {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.depth = builder.create("scene_depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, w, h, 1, 1});
+            if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            if (context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
+        },
+        [this, &context, &shadows, w, h](const PassResources& resources, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.color), 0);
+            glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, resources.id(d.depth), 0);
+            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            glViewport(0, 0, w, h);
+            const glm::vec4 background(context.input.environment.background, 1.0f);
+            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, &background[0]);
+            const float clearDepth = 0.0f;  // reversed Z: 0 is infinitely far
+            glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+
+            glUseProgram(program_.id());
+            context.frameData->bind();
+            if (d.shadowMap.valid()) {
+                glBindTextureUnit(kShadowMapUnit, resources.id(d.shadowMap));
+                glBindSampler(kShadowMapUnit, shadows.compareSampler_.id());
+            }
+            if (d.slices.valid()) glBindTextureUnit(kTransmittanceUnit, resources.id(d.slices));
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_GREATER);
+            glDepthMask(GL_TRUE);
+            glDisable(GL_BLEND);
+            drawInstances(context, program_.id(), {.normalMatrixLocation = 1, .cullSingleSided = true, .bindMaterial = true});
+            glBindSampler(kShadowMapUnit, 0);
+            glDisable(GL_CULL_FACE);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    context.sceneColor = data.color;
+    context.sceneDepth = data.depth;
+}
+
+void drawInstances(const FrameContext& context, GLuint program, const DrawOptions& options) {
+    const GpuScene& scene = *context.input.gpuScene;
+    for (const auto& instance : context.input.instances) {
+        glm::dmat4 relative = instance.world;
+        relative[3] -= glm::dvec4(context.view.origin, 0.0);
+        const glm::mat4 model(relative);
+        glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, &model[0][0]);
+        if (options.normalMatrixLocation >= 0) {
+            const glm::mat3 normalMatrix(glm::inverseTranspose(glm::dmat3(instance.world)));
+            glProgramUniformMatrix3fv(program, options.normalMatrixLocation, 1, GL_FALSE, &normalMatrix[0][0]);
+        }
+        // A mirroring transform flips triangle winding; front faces follow the determinant's sign.
+        const bool mirrored = glm::determinant(glm::dmat3(instance.world)) < 0.0;
+        glFrontFace(mirrored ? GL_CW : GL_CCW);
+        for (const auto& primitive : scene.primitives(instance.mesh)) {
+            const GpuMaterial& material = scene.material(primitive.material);
+            if (options.cullSingleSided && !material.doubleSided) {
+                glEnable(GL_CULL_FACE);
+                glCullFace(GL_BACK);
+            } else {
+                glDisable(GL_CULL_FACE);
+            }
+            if (options.bindMaterial) {
+                glProgramUniform4fv(program, 2, 1, &material.baseColorFactor[0]);
+                const int texCoord = material.texture >= 0 ? material.texCoord : -1;
+                glProgramUniform1i(program, 3, texCoord);
+                if (material.texture >= 0) {
+                    const GpuTexture& t = scene.texture(material.texture);
+                    glBindTextureUnit(0, t.texture.id());
+                    glBindSampler(0, t.sampler.id());
+                }
+            }
+            glBindVertexArray(primitive.vertexArray.id());
+            glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
+        }
+    }
+    glFrontFace(GL_CCW);
+    glBindVertexArray(0);
+    glBindSampler(0, 0);
+}
+
+}  // namespace nimbus::render

@@ -1,0 +1,52 @@
+#pragma once
+// The engine's own passes (one .cpp and one set of .glsl files each).
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/render/fullscreen.h"
+#include "nimbus/render/scene_renderer.h"
+
+namespace nimbus::render {
+
+// Depth from every light view into one D32F array (DESIGN.md §3 step 1).
+class ShadowPass {
+public:
+    ShadowPass();
+    void add(FrameGraph& graph, FrameContext& context);
+
+private:
+    gpu::Program program_;
+    gpu::Sampler compareSampler_;
+    friend class OpaquePass;
+};
+
+// Lambert meshes with shadows into scene colour + depth (DESIGN.md §3 step 2).
+class OpaquePass {
+public:
+    OpaquePass();
+    void add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows);
+
+private:
+    gpu::Program program_;
+};
+
+// media over opaque into the persistent output (DESIGN.md §3 step 4).
+class ComposePass {
+public:
+    ComposePass();
+    void add(FrameGraph& graph, FrameContext& context, const gpu::Texture& output);
+
+private:
+    gpu::Program program_;
+    FullscreenTriangle triangle_;
+};
+
+// Draws every instance's primitives with uModel (location 0) and, when `normalMatrixLocation` ≥ 0,
+// the normal matrix; `perMaterial` sets material uniforms. Skips back faces of single-sided
+// materials when `cullSingleSided`.
+struct DrawOptions {
+    int normalMatrixLocation = -1;
+    bool cullSingleSided = false;
+    bool bindMaterial = false;
+};
+void drawInstances(const FrameContext& context, GLuint program, const DrawOptions& options);
+
+}  // namespace nimbus::render

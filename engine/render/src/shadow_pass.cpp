@@ -1,0 +1,62 @@
+// Mesh shadow maps: every light view renders all meshes' depth into its layer of one D32F array.
+// Both faces are drawn (any triangle blocks light, as in the reference); a slope-scaled polygon
+// offset plus the lookup's normal offset keep lit surfaces from shadowing themselves.
+#include <algorithm>
+
+#include "passes.h"
+
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::render {
+
+ShadowPass::ShadowPass() {
+    program_ = gpu::compileProgram({.vertex = "shadow_depth.vert", .fragment = "shadow_depth.frag"});
+    compareSampler_ = gpu::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(compareSampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glSamplerParameteri(compareSampler_.id(), GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
+}
+
+void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
+    int layers = 0;
+    for (const auto& views : context.shadowViews) layers += static_cast<int>(views.size());
+    if (layers == 0 || context.input.instances.empty()) return;  // nothing casts: no shadow map at all
+    const int size = context.settings.shadowMapSize;
+
+    struct Data {
+        ResourceHandle map;
+    };
+    const auto& data = graph.addPass<Data>(
+        "shadow_maps",
+        [&](PassBuilder& builder, Data& d) {
+            d.map = builder.create("shadow_maps", {GL_TEXTURE_2D_ARRAY, GL_DEPTH_COMPONENT32F, size, size, layers, 1});
+        },
+        [this, &context, size](const PassResources& resources, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glUseProgram(program_.id());
+            glViewport(0, 0, size, size);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_GREATER);  // reversed Z
+            glDepthMask(GL_TRUE);
+            glDisable(GL_CULL_FACE);
+            glDisable(GL_BLEND);
+            glEnable(GL_POLYGON_OFFSET_FILL);
+            glPolygonOffset(-1.5f, -2.0f);  // reversed Z: push stored depth away from the light
+            int layer = 0;
+            for (const auto& views : context.shadowViews) {
+                for (const auto& view : views) {
+                    glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, resources.id(d.map), 0, layer++);
+                    glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
+                    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+                    const float clearDepth = 0.0f;
+                    glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+                    glProgramUniformMatrix4fv(program_.id(), 1, 1, GL_FALSE, &view.viewProjection[0][0]);
+                    drawInstances(context, program_.id(), {});
+                }
+            }
+            glDisable(GL_POLYGON_OFFSET_FILL);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    context.shadowMap = data.map;
+}
+
+}  // namespace nimbus::render

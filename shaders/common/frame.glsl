@@ -1,0 +1,37 @@
+// Per-frame camera and environment (render/frame_data.h GpuFrame). Positions are relative to the
+// camera (the frame origin), so the eye is at (0, 0, 0) for perspective views.
+layout(std140, binding = 0) uniform Frame {
+    mat4 viewProjection;
+    mat4 viewMatrix;
+    mat4 inverseViewProjection;
+    vec4 cameraRight;    // w: tan(yfov/2)·aspect, or ortho half width
+    vec4 cameraUp;       // w: tan(yfov/2), or ortho half height
+    vec4 cameraForward;  // w: 1 orthographic
+    vec4 depthParams;    // xy: linearisation, z: near, w: far (0 infinite)
+    vec4 viewport;       // width, height, 1/width, 1/height
+    vec4 ambient;
+    vec4 background;
+    ivec4 counts;        // x: lights, y: transmittance slices present, z: shadow map size, w: PCF radius
+} frame;
+
+bool frameOrthographic() { return frame.cameraForward.w > 0.5; }
+
+// Reversed-Z depth-buffer value → view depth (distance along the camera's forward axis).
+float linearViewDepth(float d) {
+    if (frameOrthographic()) return frame.depthParams.x + (1.0 - d) * (frame.depthParams.y - frame.depthParams.x);
+    return d + frame.depthParams.x > 0.0 ? frame.depthParams.y / (d + frame.depthParams.x) : 1e30;
+}
+
+// The camera ray through a window position (pixel centre = integer + 0.5): origin and unit direction,
+// both relative to the frame origin. Matches the reference renderer exactly.
+void cameraRay(vec2 fragCoord, out vec3 origin, out vec3 direction) {
+    vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
+    if (frameOrthographic()) {
+        origin = frame.cameraRight.xyz * (ndc.x * frame.cameraRight.w) + frame.cameraUp.xyz * (ndc.y * frame.cameraUp.w);
+        direction = frame.cameraForward.xyz;
+    } else {
+        origin = vec3(0.0);
+        direction = normalize(frame.cameraForward.xyz + frame.cameraRight.xyz * (ndc.x * frame.cameraRight.w) +
+                              frame.cameraUp.xyz * (ndc.y * frame.cameraUp.w));
+    }
+}

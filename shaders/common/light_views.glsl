@@ -1,0 +1,12 @@
+// Views from a light (render/frame_data.h GpuLightView), shared by shadow maps and transmittance slices.
+struct GpuLightView {
+    mat4 view;
+    mat4 viewProjection;
+    vec4 params;   // x: perspective, y: depth near, z: depth far, w: slice count
+    vec4 params2;  // x: first layer, y: texel size at depth 1, zw: half extent
+};
+
+// Which of a light's views sees p: the cube face for six-view point lights, else the only one.
+int lightViewIndex(int first, int count, vec3 lightPosition, vec3 p) {
+    return count == 6 ? first + cubeFace(p - lightPosition) : first;
+}

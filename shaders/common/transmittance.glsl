@@ -1,0 +1,34 @@
+// Medium optical depth towards a light, from the light's slices (DESIGN.md §3 light-slice system).
+// Slice k (0-based) of a view holds the optical depth accumulated from the light up to view depth
+// near + (k+1)(far − near)/K; depth `near` has zero. Between slices τ is interpolated linearly,
+// so τ is exact at every slice plane. Needs lights.glsl and light_views.glsl.
+layout(std430, binding = 2) readonly buffer TransmittanceViews { GpuLightView transmittanceViews[]; };
+layout(binding = 2) uniform sampler2DArray transmittanceSlices;
+
+float sliceValue(vec2 uv, float firstLayer, int k) {
+    vec4 texel = texture(transmittanceSlices, vec3(uv, firstLayer + float(k / 4)));
+    int c = k - 4 * (k / 4);
+    return c == 0 ? texel.x : c == 1 ? texel.y : c == 2 ? texel.z : texel.w;
+}
+
+float mediumOpticalDepth(int lightIndex, vec3 p) {
+    if (frame.counts.y == 0) return 0.0;
+    GpuLight L = lights[lightIndex];
+    int first = int(L.media.x);
+    if (first < 0) return 0.0;
+    GpuLightView v = transmittanceViews[lightViewIndex(first, int(L.media.y), L.position.xyz, p)];
+    vec4 clip = v.viewProjection * vec4(p, 1.0);
+    if (clip.w <= 0.0) return 0.0;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
+    float depth = -(v.view * vec4(p, 1.0)).z;
+    int K = int(v.params.w);
+    float s = (depth - v.params.y) / (v.params.z - v.params.y) * float(K);
+    if (s <= 0.0) return 0.0;
+    if (s >= float(K)) return sliceValue(uv, v.params2.x, K - 1);
+    int k = int(floor(s));
+    float f = s - float(k);
+    float lo = k == 0 ? 0.0 : sliceValue(uv, v.params2.x, k - 1);
+    float hi = sliceValue(uv, v.params2.x, k);
+    return mix(lo, hi, f);
+}
