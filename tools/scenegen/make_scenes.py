@@ -26,7 +26,7 @@ def demo():
     b.node("tower_white", translation=(-3.5, 2, -2), mesh=b.box_mesh("tower", (1.2, 4, 1.2), white))
     b.node("slab_blue", translation=(3, 0.4, 1.5), rotation=(0, 0.3826834, 0, 0.9238795),
            mesh=b.box_mesh("slab", (2.5, 0.8, 1.2), blue))
-    b.sun("sun", direction=(-0.45, -0.8, -0.4), intensity=3.0)
+    b.sun("sun", direction=(0.55, -0.75, -0.35), intensity=3.0)
     b.camera("main", eye=(9, 6, 11), target=(0, 1, 0), yfov=0.65)
     return b
 

@@ -1,0 +1,77 @@
+#include "nimbus/base/settings.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "nimbus/base/error.h"
+
+namespace nimbus {
+
+void Settings::declare(const std::string& key, const std::string& help) {
+    if (!declared(key)) declarations_.push_back({key, help});
+}
+
+bool Settings::declared(const std::string& key) const {
+    return std::any_of(declarations_.begin(), declarations_.end(), [&](const Declaration& d) { return d.key == key; });
+}
+
+void Settings::assign(const std::string& assignment, const std::string& origin) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throwInputError(origin, assignment, "", "expected KEY=VALUE");
+    set(assignment.substr(0, eq), assignment.substr(eq + 1), origin);
+}
+
+void Settings::set(const std::string& key, const std::string& value, const std::string& origin) {
+    if (!declared(key)) {
+        std::string known;
+        for (const auto& d : declarations_) known += (known.empty() ? "" : ", ") + d.key;
+        throwInputError(origin, key, "", "unknown setting (known: " + (known.empty() ? std::string("none") : known) + ")");
+    }
+    values_[key] = value;
+    origins_[key] = origin;
+}
+
+std::optional<double> Settings::number(const std::string& key, double min, double max) const {
+    const auto it = values_.find(key);
+    if (it == values_.end()) return std::nullopt;
+    const std::string& v = it->second;
+    double out = 0.0;
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+    if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(out))
+        throwInputError(origins_.at(key), key, "", "'" + v + "' is not a number");
+    if (out < min || out > max)
+        throwInputError(origins_.at(key), key, "", v + " is outside [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+    return out;
+}
+
+std::optional<long long> Settings::integer(const std::string& key, long long min, long long max) const {
+    const auto it = values_.find(key);
+    if (it == values_.end()) return std::nullopt;
+    const std::string& v = it->second;
+    long long out = 0;
+    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+    if (ec != std::errc() || end != v.data() + v.size())
+        throwInputError(origins_.at(key), key, "", "'" + v + "' is not a whole number");
+    if (out < min || out > max)
+        throwInputError(origins_.at(key), key, "", v + " is outside [" + std::to_string(min) + ", " + std::to_string(max) + "]");
+    return out;
+}
+
+std::optional<bool> Settings::boolean(const std::string& key) const {
+    const auto it = values_.find(key);
+    if (it == values_.end()) return std::nullopt;
+    const std::string& v = it->second;
+    if (v == "1" || v == "true" || v == "on" || v == "yes") return true;
+    if (v == "0" || v == "false" || v == "off" || v == "no") return false;
+    throwInputError(origins_.at(key), key, "", "'" + v + "' is not on/off");
+}
+
+std::optional<std::string> Settings::text(const std::string& key) const {
+    const auto it = values_.find(key);
+    if (it == values_.end()) return std::nullopt;
+    return it->second;
+}
+
+}  // namespace nimbus

@@ -1,0 +1,65 @@
+#include "nimbus/scene/scene_plugin.h"
+
+#include <cmath>
+
+#include "nimbus/ecs/frame_info.h"
+
+namespace nimbus::scene {
+namespace {
+
+// Time the World's state corresponds to after the current update: systems in Simulate advance the
+// state from FrameInfo::time to FrameInfo::time + timeStep.
+double endOfStep(const ecs::FrameInfo& info) { return static_cast<double>(info.index + 1) * info.timeStep; }
+
+void animate(ecs::World& world) {
+    const auto* asset = world.tryResource<SceneAsset>();
+    if (asset == nullptr || asset->scene == nullptr || asset->scene->animations.empty()) return;
+    const std::vector<glm::dmat4> pose = assets::computeWorldTransforms(*asset->scene, endOfStep(world.resource<ecs::FrameInfo>()));
+    world.view<SceneNode, Transform>().each([&](ecs::Entity, const SceneNode& node, Transform& transform) {
+        transform.world = pose.at(static_cast<std::size_t>(node.node));
+    });
+}
+
+}  // namespace
+
+void ScenePlugin::build(ecs::App& app) {
+    app.registerComponent<Transform>("Transform");
+    app.registerComponent<SceneNode>("SceneNode");
+    app.registerComponent<MeshRenderer>("MeshRenderer");
+    app.registerComponent<CameraComponent>("Camera");
+    app.registerComponent<LightComponent>("Light");
+    app.addSystem({.name = kAnimateSystem, .phase = ecs::phases::kSimulate}, animate);
+}
+
+void spawnScene(ecs::World& world, std::shared_ptr<const assets::Scene> scene, double time) {
+    const std::vector<glm::dmat4> pose = assets::computeWorldTransforms(*scene, time);
+    for (std::size_t i = 0; i < scene->nodes.size(); ++i) {
+        const assets::Node& node = scene->nodes[i];
+        const ecs::Entity e = world.create();
+        world.emplace<SceneNode>(e, SceneNode{static_cast<int>(i), node.name});
+        world.emplace<Transform>(e, Transform{pose[i]});
+        if (node.mesh >= 0) world.emplace<MeshRenderer>(e, MeshRenderer{node.mesh});
+        if (node.camera >= 0) world.emplace<CameraComponent>(e, CameraComponent{scene->cameras.at(static_cast<std::size_t>(node.camera))});
+        if (node.light >= 0) world.emplace<LightComponent>(e, LightComponent{scene->lights.at(static_cast<std::size_t>(node.light))});
+    }
+    world.insertResource<SceneAsset>(SceneAsset{std::move(scene)});
+}
+
+std::vector<glm::dmat4> currentWorldTransforms(ecs::World& world) {
+    const auto& asset = world.resource<SceneAsset>();
+    std::vector<glm::dmat4> transforms(asset.scene->nodes.size(), glm::dmat4(1.0));
+    world.view<SceneNode, Transform>().each([&](ecs::Entity, const SceneNode& node, const Transform& transform) {
+        if (node.node >= 0 && static_cast<std::size_t>(node.node) < transforms.size())
+            transforms[static_cast<std::size_t>(node.node)] = transform.world;
+    });
+    return transforms;
+}
+
+double simulationTime(const ecs::App& app) { return static_cast<double>(app.frame()) * app.timeStep(); }
+
+void simulateTo(ecs::App& app, double time) {
+    const auto steps = static_cast<std::uint64_t>(std::llround(std::max(time, 0.0) / app.timeStep()));
+    while (app.frame() < steps) app.update(ecs::phases::kSimulate);
+}
+
+}  // namespace nimbus::scene

@@ -1,0 +1,35 @@
+#include "session.h"
+
+#include <charconv>
+
+#include "nimbus/base/error.h"
+#include "nimbus/base/settings.h"
+#include "nimbus/render/render_plugin.h"
+#include "nimbus/scene/scene_plugin.h"
+
+namespace nimbus::sandbox {
+
+Session::Session(const SessionOptions& options) {
+    scene_ = std::make_shared<const assets::Scene>(assets::loadScene(options.scene));
+    app_ = std::make_unique<ecs::App>();
+    app_->insertResource<Settings>();
+    app_->addPlugin<render::RenderPlugin>();
+    for (const auto& assignment : options.settings) app_->resource<Settings>().assign(assignment);
+    scene::spawnScene(app_->world(), scene_);
+    scene::simulateTo(*app_, options.time);
+}
+
+double Session::time() const { return scene::simulationTime(*app_); }
+
+void parseSize(const std::string& text, int& width, int& height, const std::string& option) {
+    const auto x = text.find('x');
+    auto parse = [&](std::string_view part, int& out) {
+        const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), out);
+        return ec == std::errc() && end == part.data() + part.size() && out >= 1 && out <= 16384;
+    };
+    if (x == std::string::npos || !parse(std::string_view(text).substr(0, x), width) ||
+        !parse(std::string_view(text).substr(x + 1), height))
+        throwInputError(option, text, "", "expected WxH with each side in 1..16384, e.g. 1280x720");
+}
+
+}  // namespace nimbus::sandbox

@@ -1,0 +1,39 @@
+#pragma once
+// A scene loaded into an App with every plugin, simulated to the requested time. The render,
+// reference, bench and edit commands all start from one, so they all see the same state.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "nimbus/assets/scene.h"
+#include "nimbus/ecs/app.h"
+
+namespace nimbus::sandbox {
+
+struct SessionOptions {
+    std::filesystem::path scene;
+    double time = 0.0;
+    std::vector<std::string> settings;  // KEY=VALUE from --set
+};
+
+class Session {
+public:
+    // Loads and validates the whole scene (throws InputError before anything is spawned), builds
+    // the plugins, spawns the scene and simulates it to options.time.
+    explicit Session(const SessionOptions& options);
+
+    ecs::App& app() { return *app_; }
+    const assets::Scene& scene() const { return *scene_; }
+    std::shared_ptr<const assets::Scene> sharedScene() const { return scene_; }
+    double time() const;
+
+private:
+    std::shared_ptr<const assets::Scene> scene_;
+    std::unique_ptr<ecs::App> app_;
+};
+
+// Parses "WxH" (1..16384 each); throws InputError naming the option otherwise.
+void parseSize(const std::string& text, int& width, int& height, const std::string& option = "--size");
+
+}  // namespace nimbus::sandbox
