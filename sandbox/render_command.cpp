@@ -48,7 +48,9 @@ int run(const RenderOptions& o) {
     if (o.frames < 20) throwInputError("--frames", std::to_string(o.frames), "", "at least 20 frames are timed");
 
     auto context = gpu::Context::create();
-    Session session({o.scene, o.time, o.settings});
+    std::vector<std::string> settings = o.settings;
+    if (!o.mode.empty()) settings.push_back("mode=" + o.mode);
+    Session session({o.scene, o.time, settings});
     ecs::App& app = session.app();
     auto& request = app.resource<render::RenderRequest>();
     request.enabled = true;

@@ -4,6 +4,7 @@
 
 #include "nimbus/base/error.h"
 #include "nimbus/base/settings.h"
+#include "nimbus/media/ecs/media_plugin.h"
 #include "nimbus/render/render_plugin.h"
 #include "nimbus/scene/scene_plugin.h"
 
@@ -14,6 +15,7 @@ Session::Session(const SessionOptions& options) {
     app_ = std::make_unique<ecs::App>();
     app_->insertResource<Settings>();
     app_->addPlugin<render::RenderPlugin>();
+    app_->addPlugin<media::ecs::MediaPlugin>();
     for (const auto& assignment : options.settings) app_->resource<Settings>().assign(assignment);
     scene::spawnScene(app_->world(), scene_);
     scene::simulateTo(*app_, options.time);

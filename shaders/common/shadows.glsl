@@ -1,7 +1,7 @@
 // Mesh shadow maps: one layer per light view in a depth array, reversed Z (closer to the light =
 // larger value), compared with GL_GEQUAL so a lookup returns the lit fraction. Needs lights.glsl
 // and light_views.glsl.
-layout(std430, binding = 1) readonly buffer ShadowViews { GpuLightView shadowViews[]; };
+#include "common/shadow_views.glsl"
 layout(binding = 1) uniform sampler2DArrayShadow shadowMap;
 
 // Fraction of PCF taps that see the light from p. `offsetDir` pushes the lookup off the surface

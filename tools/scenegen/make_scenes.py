@@ -31,7 +31,41 @@ def demo():
     return b
 
 
-SCENES = {"demo": demo}
+def blob_cloud(rng, count, centre, radii, particle_radius=(0.35, 0.7)):
+    """Particles filling an ellipsoid, denser towards the middle (a cumulus-like blob)."""
+    import math
+    positions, sizes, densities = [], [], []
+    while len(positions) < count:
+        p = [rng.uniform(-1, 1) for _ in range(3)]
+        r2 = sum(c * c for c in p)
+        if r2 > 1:
+            continue
+        positions.append([centre[i] + p[i] * radii[i] for i in range(3)])
+        sizes.append(rng.uniform(*particle_radius))
+        densities.append(1.0 - 0.6 * math.sqrt(r2))
+    return positions, sizes, densities
+
+
+def cloud():
+    """Issue 5's cloud crossed by a thin wing: a static particle cloud above the ground."""
+    import random
+    rng = random.Random(5)
+    b = Builder()
+    b.environment(background=[0.35, 0.48, 0.72], ambient=[0.15, 0.18, 0.24])
+    ground = b.material("ground", (0.45, 0.5, 0.4))
+    metal = b.material("wing", (0.7, 0.7, 0.72), double_sided=True)
+    b.node("ground", mesh=b.plane_mesh("ground", 40, 40, ground))
+    positions, sizes, densities = blob_cloud(rng, 2000, (0, 4, 0), (4.0, 2.2, 3.0))
+    b.node("cloud", ext={"medium": {"extinction": 2.5, "albedo": [0.95, 0.95, 0.95], "g": 0.5},
+                         "particles": b.particles(positions, sizes, densities)})
+    b.node("wing", translation=(0.5, 4.1, 0), rotation=(0, 0, 0.0871557, 0.9961947),
+           mesh=b.box_mesh("wing", (9.0, 0.08, 1.6), metal))
+    b.sun("sun", direction=(0.4, -0.8, -0.45), intensity=3.0)
+    b.camera("main", eye=(0, 5.5, 14), target=(0, 3.8, 0), yfov=0.7)
+    return b
+
+
+SCENES = {"demo": demo, "cloud": cloud}
 
 if __name__ == "__main__":
     wanted = sys.argv[1:] or list(SCENES)

@@ -28,21 +28,33 @@ void ScenePlugin::build(ecs::App& app) {
     app.registerComponent<MeshRenderer>("MeshRenderer");
     app.registerComponent<CameraComponent>("Camera");
     app.registerComponent<LightComponent>("Light");
+    if (!app.hasResource<SceneSpawners>()) app.insertResource<SceneSpawners>();
     app.addSystem({.name = kAnimateSystem, .phase = ecs::phases::kSimulate}, animate);
 }
 
 void spawnScene(ecs::World& world, std::shared_ptr<const assets::Scene> scene, double time) {
     const std::vector<glm::dmat4> pose = assets::computeWorldTransforms(*scene, time);
+    std::vector<ecs::Entity> created;
     for (std::size_t i = 0; i < scene->nodes.size(); ++i) {
         const assets::Node& node = scene->nodes[i];
         const ecs::Entity e = world.create();
+        created.push_back(e);
         world.emplace<SceneNode>(e, SceneNode{static_cast<int>(i), node.name});
         world.emplace<Transform>(e, Transform{pose[i]});
         if (node.mesh >= 0) world.emplace<MeshRenderer>(e, MeshRenderer{node.mesh});
         if (node.camera >= 0) world.emplace<CameraComponent>(e, CameraComponent{scene->cameras.at(static_cast<std::size_t>(node.camera))});
         if (node.light >= 0) world.emplace<LightComponent>(e, LightComponent{scene->lights.at(static_cast<std::size_t>(node.light))});
     }
-    world.insertResource<SceneAsset>(SceneAsset{std::move(scene)});
+    world.insertResource<SceneAsset>(SceneAsset{scene});
+    if (const auto* spawners = world.tryResource<SceneSpawners>()) {
+        try {
+            for (const auto& [name, spawn] : spawners->list) spawn(world, *scene);
+        } catch (...) {
+            for (const ecs::Entity e : created) world.destroy(e);
+            world.removeResource<SceneAsset>();
+            throw;
+        }
+    }
 }
 
 std::vector<glm::dmat4> currentWorldTransforms(ecs::World& world) {

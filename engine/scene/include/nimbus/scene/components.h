@@ -1,11 +1,14 @@
 #pragma once
 // Components for a glTF scene living in the ECS: plain structs, one per concern.
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
 #include "nimbus/assets/scene.h"
+#include "nimbus/ecs/world.h"
 
 namespace nimbus::scene {
 
@@ -35,6 +38,19 @@ struct LightComponent {
 // Resource: the loaded scene every system reads (shared so a reload can swap it atomically).
 struct SceneAsset {
     std::shared_ptr<const assets::Scene> scene;
+};
+
+// Resource: what plugins add to a spawned scene. spawnScene() calls each after creating the node
+// entities, in registration order; a spawner throws InputError for data it refuses, and then
+// nothing of the scene is kept (never half-loaded).
+struct SceneSpawners {
+    using Spawner = std::function<void(ecs::World&, const assets::Scene&)>;
+    std::vector<std::pair<std::string, Spawner>> list;
+    void add(std::string name, Spawner spawner) {
+        for (const auto& [existing, _] : list)
+            if (existing == name) return;
+        list.emplace_back(std::move(name), std::move(spawner));
+    }
 };
 
 }  // namespace nimbus::scene

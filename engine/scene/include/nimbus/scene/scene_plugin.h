@@ -24,7 +24,8 @@ public:
 };
 
 // One entity per node of the scene (SceneNode + Transform, plus MeshRenderer / CameraComponent /
-// LightComponent where the node has them), posed at `time`. Stores the scene as the SceneAsset resource.
+// LightComponent where the node has them), posed at `time`, then the plugins' SceneSpawners.
+// Stores the scene as the SceneAsset resource. If a spawner throws, everything is undone.
 void spawnScene(ecs::World& world, std::shared_ptr<const assets::Scene> scene, double time = 0.0);
 
 // Every node's world matrix as the ECS holds it now (indexed by glTF node), for code that needs

@@ -1,0 +1,70 @@
+#pragma once
+// The participating media in the real-time frame (DESIGN.md §3), as a render extension any host can
+// plug into render::SceneRenderer: before the opaque pass it renders the light slices (medium
+// optical depth from each light, which also shadows the meshes); after it, the medium itself in the
+// chosen mode into an offscreen target that the compose pass puts over the scene.
+//
+// Does not: simulate (emitters fill the ParticleSet), own a GL context, or know about the ECS.
+#include <memory>
+#include <string>
+
+#include "nimbus/media/particle_set.h"
+#include "nimbus/render/scene_renderer.h"
+
+namespace nimbus::media {
+
+enum class MediaMode { Particles };
+
+// Parses "particles"; throws InputError naming the option for anything else.
+MediaMode parseMediaMode(const std::string& text, const std::string& origin = "--mode");
+const char* mediaModeName(MediaMode mode);
+
+// Zero values take the defaults noted.
+struct MediaRenderSettings {
+    MediaMode mode = MediaMode::Particles;
+    int slices = 0;            // per light view; 0: chosen from the medium (see slice_plan.h), else 4..32
+    int sliceResolution = 0;   // texels per side of a slice; 0: 256
+    bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
+};
+
+struct MediaFrameStats {
+    std::size_t particles = 0;
+    int slices = 0;            // per light view, this frame
+    int sliceViews = 0;        // light views that got slices
+};
+
+class LightSlicePass;
+class ParticlePass;
+class ParticleGpuBuffer;
+
+class MediaRenderer final : public render::RenderExtension {
+public:
+    MediaRenderer();
+    ~MediaRenderer() override;
+    MediaRenderer(const MediaRenderer&) = delete;
+    MediaRenderer& operator=(const MediaRenderer&) = delete;
+
+    // The medium to draw this frame. Keeps a reference: `particles` must outlive the frame.
+    void prepare(const ParticleSet& particles, const MediaRenderSettings& settings);
+
+    assets::Aabb bounds() const override { return bounds_; }
+    void beforeOpaque(render::FrameGraph& graph, render::FrameContext& context) override;
+    void afterOpaque(render::FrameGraph& graph, render::FrameContext& context) override;
+
+    const MediaFrameStats& stats() const { return stats_; }
+
+private:
+    const ParticleSet* particles_ = nullptr;
+    MediaRenderSettings settings_;
+    assets::Aabb bounds_;
+    MediaFrameStats stats_;
+    // GPU objects exist only once something is drawn ("model only what a scene needs").
+    std::unique_ptr<ParticleGpuBuffer> buffer_;
+    std::unique_ptr<LightSlicePass> slicePass_;
+    std::unique_ptr<ParticlePass> particlePass_;
+};
+
+// World bounds of the particle spheres.
+assets::Aabb particleBounds(const ParticleSet& particles);
+
+}  // namespace nimbus::media

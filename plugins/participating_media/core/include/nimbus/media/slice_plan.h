@@ -1,0 +1,31 @@
+#pragma once
+// How many light slices a medium needs (DESIGN.md §3 "slice count follows from the scene").
+//
+// Slices hold optical depth at K planes across the medium's depth range from the light; in between,
+// τ is interpolated linearly. Two things make that interpolation wrong: a slice spacing larger than
+// the particles (τ rises over one particle's diameter as an erf curve), and a large optical depth
+// per slice (the error in τ becomes a large error in e^−τ). So
+//     K = clamp(roundUpTo4(max(depth extent / mean radius, 2 · τ_column)), 4, 32)
+// where τ_column is the largest optical depth along one light ray, estimated on a 32×32 grid
+// across the light's view of the medium.
+#include "nimbus/media/particle_set.h"
+#include "nimbus/render/light_views.h"
+
+namespace nimbus::media {
+
+inline constexpr int kMinSlices = 4;
+inline constexpr int kMaxSlices = 32;  // 8 render targets × 4 channels in one pass
+
+struct SliceEstimate {
+    double depthNear = 0.0;     // the medium's view-depth range from the light (slices span it)
+    double depthFar = 0.0;
+    double depthExtent = 0.0;   // depthFar − depthNear
+    double meanRadius = 0.0;
+    double columnDepth = 0.0;   // τ_column
+    int slices = kMinSlices;
+};
+
+// `view` is a light view of the medium; `origin` the frame origin its matrices are relative to.
+SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightView& view, const glm::dvec3& origin);
+
+}  // namespace nimbus::media

@@ -1,0 +1,74 @@
+// Light slices: optical depth from each light up to K planes across the medium, exact at the
+// planes (shaders/media/light_slices.*). The opaque pass and the media pass read them as T = e^−τ.
+#include "media_passes.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::media {
+
+LightSlicePass::LightSlicePass() {
+    program_ = gpu::compileProgram({.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag"});
+}
+
+render::ResourceHandle LightSlicePass::add(render::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
+                                           const ParticleGpuBuffer& buffer) {
+    int layers = 0;
+    for (const auto& v : views) layers = std::max(layers, v.firstLayer + (v.slices + 3) / 4);
+    struct Data {
+        render::ResourceHandle slices;
+    };
+    const auto& data = graph.addPass<Data>(
+        "light_slices",
+        [&](render::PassBuilder& builder, Data& d) {
+            d.slices = builder.create("light_slices", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1});
+        },
+        [this, views, resolution, &buffer](const render::PassResources& resources, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glUseProgram(program_.id());
+            buffer.bindParticles();
+            glViewport(0, 0, resolution, resolution);
+            glDisable(GL_DEPTH_TEST);
+            glDisable(GL_CULL_FACE);
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFunc(GL_ONE, GL_ONE);  // optical depth adds: no sort needed
+            const GLuint program = program_.id();
+            for (const auto& v : views) {
+                const int attachments = (v.slices + 3) / 4;
+                GLenum drawBuffers[8];
+                for (int a = 0; a < attachments; ++a) {
+                    glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), resources.id(d.slices), 0,
+                                                   v.firstLayer + a);
+                    drawBuffers[a] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a);
+                }
+                glNamedFramebufferDrawBuffers(fbo.id(), attachments, drawBuffers);
+                glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+                const float zero[4] = {0, 0, 0, 0};
+                for (int a = 0; a < attachments; ++a) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, a, zero);
+
+                const glm::mat4 projection = v.view.viewProjection * glm::inverse(v.view.view);
+                const glm::mat4 inverseViewProjection = glm::inverse(v.view.viewProjection);
+                const glm::vec4 params(v.view.perspective ? 1.0f : 0.0f, v.view.depthNear, v.view.depthFar, static_cast<float>(v.slices));
+                const glm::vec2 size(static_cast<float>(resolution));
+                glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(v.view.view));
+                glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
+                glProgramUniformMatrix4fv(program, 3, 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
+                glProgramUniform2fv(program, 4, 1, glm::value_ptr(size));
+                glProgramUniformMatrix4fv(program, 5, 1, GL_FALSE, glm::value_ptr(projection));
+                glProgramUniform3fv(program, 6, 1, glm::value_ptr(v.lightOrigin));
+                glBindVertexArray(vertexArray_.id());
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
+                glBindVertexArray(0);
+                // Detach so the next view's attachment count starts clean.
+                for (int a = 0; a < attachments; ++a)
+                    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), 0, 0);
+            }
+            glDisable(GL_BLEND);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.slices;
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,45 @@
+#pragma once
+// The plugin's GPU passes (one .cpp + one shader pair each).
+#include <vector>
+
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/media/media_renderer.h"
+#include "nimbus/render/frame_graph.h"
+#include "particle_buffer.h"
+
+namespace nimbus::media {
+
+// One light view's slices: the view, the slice range and count, and where its layers start.
+struct SliceView {
+    render::LightView view;
+    glm::vec3 lightOrigin{0.0f};  // origin-relative light position (perspective views)
+    int slices = 4;
+    int firstLayer = 0;
+};
+
+// Light slices (DESIGN.md §3 light-slice system): every slice view renders all particles once,
+// additively, into ceil(K/4) layers of one RGBA32F array.
+class LightSlicePass {
+public:
+    LightSlicePass();
+    render::ResourceHandle add(render::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
+                               const ParticleGpuBuffer& buffer);
+
+private:
+    gpu::Program program_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();  // core profile: one must be bound
+};
+
+// `particles` mode: sorted soft billboards into the media target (rgb in-scatter, a transmittance).
+class ParticlePass {
+public:
+    ParticlePass();
+    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
+                               bool softParticles);
+
+private:
+    gpu::Program program_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+}  // namespace nimbus::media

@@ -1,0 +1,46 @@
+#include "particle_buffer.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace nimbus::media {
+namespace {
+
+void ensureCapacity(gpu::Buffer& buffer, std::size_t& capacity, std::size_t bytes) {
+    if (buffer && capacity >= bytes) return;
+    capacity = std::max<std::size_t>(bytes, capacity * 3 / 2);
+    buffer = gpu::createBuffer(capacity, nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+}  // namespace
+
+void ParticleGpuBuffer::upload(const ParticleSet& p, const glm::dvec3& origin) {
+    count_ = p.size();
+    staging_.resize(count_);
+    for (std::size_t i = 0; i < count_; ++i) {
+        staging_[i].positionRadius = glm::vec4(glm::vec3(p.position[i] - origin), p.radius[i]);
+        staging_[i].albedoSigma = glm::vec4(p.albedo[i], p.sigma[i]);
+        staging_[i].emissionG = glm::vec4(p.emission[i], p.g[i]);
+        staging_[i].extra = glm::vec4(p.phase[i] == PhaseFunction::Rayleigh ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f);
+    }
+    ensureCapacity(particles_, particleCapacity_, std::max<std::size_t>(count_, 1) * sizeof(GpuParticle));
+    if (count_ > 0) glNamedBufferSubData(particles_.id(), 0, static_cast<GLsizeiptr>(count_ * sizeof(GpuParticle)), staging_.data());
+}
+
+void ParticleGpuBuffer::sortBackToFront(const ParticleSet& p, const render::View& view) {
+    order_cpu_.resize(p.size());
+    keys_.resize(p.size());
+    std::iota(order_cpu_.begin(), order_cpu_.end(), 0u);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const glm::dvec3 d = p.position[i] - view.origin;
+        // Perspective: distance from the eye; orthographic: depth along the view axis.
+        keys_[i] = static_cast<float>(view.orthographic ? glm::dot(d, view.forward) : glm::length(d));
+    }
+    // Stable, so equal keys keep a deterministic order.
+    std::stable_sort(order_cpu_.begin(), order_cpu_.end(), [&](std::uint32_t a, std::uint32_t b) { return keys_[a] > keys_[b]; });
+    ensureCapacity(order_, orderCapacity_, std::max<std::size_t>(order_cpu_.size(), 1) * sizeof(std::uint32_t));
+    if (!order_cpu_.empty())
+        glNamedBufferSubData(order_.id(), 0, static_cast<GLsizeiptr>(order_cpu_.size() * sizeof(std::uint32_t)), order_cpu_.data());
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,41 @@
+#pragma once
+// The GPU copy of a ParticleSet: one std430 instance buffer (shaders/media/particle_data.glsl)
+// with positions relative to the frame origin, and a back-to-front draw order for the camera.
+#include <vector>
+
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/media/particle_set.h"
+#include "nimbus/render/view.h"
+
+namespace nimbus::media {
+
+inline constexpr GLuint kParticlesBinding = 3;
+inline constexpr GLuint kDrawOrderBinding = 5;
+
+struct alignas(16) GpuParticle {
+    glm::vec4 positionRadius;
+    glm::vec4 albedoSigma;
+    glm::vec4 emissionG;
+    glm::vec4 extra;  // x: phase (0 HG, 1 Rayleigh)
+};
+
+class ParticleGpuBuffer {
+public:
+    // Rewrites the instance buffer (grows it when needed; never shrinks, so steady frames allocate nothing).
+    void upload(const ParticleSet& particles, const glm::dvec3& origin);
+    // Sorts by distance from the eye, farthest first, and uploads the order.
+    void sortBackToFront(const ParticleSet& particles, const render::View& view);
+
+    void bindParticles() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticlesBinding, particles_.id()); }
+    void bindOrder() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDrawOrderBinding, order_.id()); }
+    std::size_t count() const { return count_; }
+
+private:
+    gpu::Buffer particles_, order_;
+    std::size_t particleCapacity_ = 0, orderCapacity_ = 0, count_ = 0;
+    std::vector<GpuParticle> staging_;
+    std::vector<std::uint32_t> order_cpu_;
+    std::vector<float> keys_;
+};
+
+}  // namespace nimbus::media

@@ -1,0 +1,63 @@
+// `particles` mode: camera-facing billboards, sorted back to front, blended premultiplied into the
+// media target. rgb accumulates in-scattered radiance, alpha the view transmittance (cleared to 1,
+// multiplied by 1 − α per particle), so the compose pass needs no extra state.
+#include "media_passes.h"
+
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/render/frame_data.h"
+
+namespace nimbus::media {
+
+inline constexpr GLuint kShadowDepthUnit = 4;
+
+ParticlePass::ParticlePass() {
+    program_ = gpu::compileProgram({.vertex = "media/particles.vert", .fragment = "media/particles.frag"});
+}
+
+render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::FrameContext& context,
+                                         const ParticleGpuBuffer& buffer, bool softParticles) {
+    struct Data {
+        render::ResourceHandle media, depth, shadowMap, slices;
+    };
+    const int w = context.view.width, h = context.view.height;
+    const auto& data = graph.addPass<Data>(
+        "media_particles",
+        [&](render::PassBuilder& builder, Data& d) {
+            d.media = builder.create("media_color", {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.depth = builder.read(context.sceneDepth);
+            if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            if (context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
+        },
+        [this, &context, &buffer, softParticles, w, h](const render::PassResources& resources, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
+            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            glViewport(0, 0, w, h);
+            const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // no radiance, full transmittance
+            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+
+            glUseProgram(program_.id());
+            context.frameData->bind();
+            buffer.bindParticles();
+            buffer.bindOrder();
+            glBindTextureUnit(render::kSceneDepthUnit, resources.id(d.depth));
+            if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
+            if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
+            glProgramUniform1i(program_.id(), 0, softParticles ? 1 : 0);
+            glDisable(GL_DEPTH_TEST);  // the fragment shader clips against scene depth itself
+            glDisable(GL_CULL_FACE);
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            glBindVertexArray(vertexArray_.id());
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
+            glBindVertexArray(0);
+            glDisable(GL_BLEND);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    context.mediaColor = data.media;
+    return data.media;
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,46 @@
+#include "nimbus/media/slice_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "nimbus/media/optics.h"
+
+namespace nimbus::media {
+
+SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightView& view, const glm::dvec3& origin) {
+    SliceEstimate e;
+    if (particles.empty()) return e;
+    constexpr int kGrid = 32;
+    std::vector<double> column(kGrid * kGrid, 0.0);
+    const glm::dmat4 viewMatrix(view.view);
+    const glm::dmat4 projection = glm::dmat4(view.viewProjection) * glm::inverse(viewMatrix);
+    double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest, radiusSum = 0.0;
+    // Peak column of one particle through its centre: σ ∫ e^{−k u²} du over the chord ≈ 0.8355·σR.
+    const double columnPerSigmaRadius = std::sqrt(kPi / kKernelFalloff) * std::erf(std::sqrt(kKernelFalloff));
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const glm::dvec4 v = viewMatrix * glm::dvec4(particles.position[i] - origin, 1.0);
+        const double r = particles.radius[i];
+        const double depth = -v.z;  // slice planes are planes of constant view depth
+        nearest = std::min(nearest, depth - r);
+        farthest = std::max(farthest, depth + r);
+        radiusSum += r;
+        const glm::dvec4 clip = projection * v;
+        if (clip.w <= 0.0) continue;
+        const glm::dvec2 uv = (glm::dvec2(clip) / clip.w) * 0.5 + 0.5;
+        const int x = std::clamp(static_cast<int>(uv.x * kGrid), 0, kGrid - 1);
+        const int y = std::clamp(static_cast<int>(uv.y * kGrid), 0, kGrid - 1);
+        column[static_cast<std::size_t>(y * kGrid + x)] += columnPerSigmaRadius * particles.sigma[i] * r;
+    }
+    e.depthNear = std::max(nearest, static_cast<double>(view.depthNear));
+    e.depthFar = std::max(farthest, e.depthNear + 1e-6);
+    e.depthExtent = e.depthFar - e.depthNear;
+    e.meanRadius = radiusSum / static_cast<double>(particles.size());
+    e.columnDepth = *std::max_element(column.begin(), column.end());
+    const double wanted = std::max(e.meanRadius > 0.0 ? e.depthExtent / e.meanRadius : 0.0, 2.0 * e.columnDepth);
+    const int rounded = 4 * static_cast<int>(std::ceil(std::min(wanted, static_cast<double>(kMaxSlices)) / 4.0));
+    e.slices = std::clamp(rounded, kMinSlices, kMaxSlices);
+    return e;
+}
+
+}  // namespace nimbus::media

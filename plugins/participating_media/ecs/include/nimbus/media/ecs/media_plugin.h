@@ -1,0 +1,59 @@
+#pragma once
+// The participating-media plugin for Nimbus's ECS: the thin adapter over the host-agnostic core.
+// build() registers, in one place:
+//   components  Medium, ParticleCloud, Emitter
+//   Simulate    media.emit          steps every emitter with its node's transform at both step ends
+//   Prepare     media.light_slices  gathers the particle set and plans the light slices
+//   Render      media.render        hands the frame to the MediaRenderer (a RenderExtension)
+// and a scene spawner that reads each node's NIMBUS_participating_media object.
+// Every system returns at once, allocating nothing, when no entity has its components.
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "nimbus/ecs/app.h"
+#include "nimbus/ecs/plugin.h"
+#include "nimbus/media/media_renderer.h"
+#include "nimbus/media/media_scene.h"
+#include "nimbus/media/particle_set.h"
+#include "nimbus/media/slice_plan.h"
+
+namespace nimbus::media::ecs {
+
+inline constexpr char kEmitSystem[] = "media.emit";
+inline constexpr char kLightSliceSystem[] = "media.light_slices";
+inline constexpr char kRenderSystem[] = "media.render";
+
+struct MediumComponent {
+    Medium medium;
+};
+
+// A static cloud in the entity's local frame (the node's world transform applies).
+struct ParticleCloud {
+    std::vector<glm::vec3> positions;
+    std::vector<float> radii;
+    std::vector<float> densities;
+};
+
+// Resource: the medium as it will be drawn this frame (world space), and how.
+struct MediaFrame {
+    ParticleSet particles;
+    MediaRenderSettings settings;
+};
+
+// Resource: the real-time renderer; created on the first frame that has something to draw.
+struct MediaRendererState {
+    std::unique_ptr<MediaRenderer> renderer;
+};
+
+class MediaPlugin final : public nimbus::ecs::Plugin {
+public:
+    std::string_view name() const override { return "nimbus.participating_media"; }
+    void build(nimbus::ecs::App& app) override;
+};
+
+// Gathers the particle set the renderers draw from the ECS state (also what `sandbox reference`
+// renders, so both see exactly the same particles).
+void gatherParticles(nimbus::ecs::World& world, ParticleSet& out);
+
+}  // namespace nimbus::media::ecs

@@ -1,0 +1,103 @@
+#include "nimbus/media/ecs/media_plugin.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "nimbus/base/log.h"
+#include "nimbus/base/settings.h"
+#include "nimbus/render/render_plugin.h"
+#include "nimbus/scene/components.h"
+#include "nimbus/scene/scene_plugin.h"
+
+namespace nimbus::media::ecs {
+namespace {
+
+using nimbus::ecs::Entity;
+using nimbus::ecs::World;
+
+// A uniform scale scales radii; cbrt|det| is the uniform part of any scale (media_scene.h documents it).
+float radiusScale(const glm::dmat4& world) { return static_cast<float>(std::cbrt(std::abs(glm::determinant(glm::dmat3(world))))); }
+
+void spawnMedia(World& world, const assets::Scene& scene) {
+    const MediaScene media = parseMediaScene(scene);  // throws before anything is added
+    if (media.empty()) return;
+    std::vector<Entity> byNode(scene.nodes.size(), nimbus::ecs::kNullEntity);
+    world.view<scene::SceneNode>().each([&](Entity e, const scene::SceneNode& node) {
+        if (node.node >= 0 && static_cast<std::size_t>(node.node) < byNode.size()) byNode[static_cast<std::size_t>(node.node)] = e;
+    });
+    for (const MediaNode& node : media.nodes) {
+        const Entity e = byNode.at(static_cast<std::size_t>(node.node));
+        world.emplace<MediumComponent>(e, MediumComponent{node.medium});
+        if (!node.localPositions.empty())
+            world.emplace<ParticleCloud>(e, ParticleCloud{node.localPositions, node.radii, node.densities});
+    }
+}
+
+MediaRenderSettings readSettings(const Settings* settings) {
+    MediaRenderSettings s;
+    if (settings == nullptr) return s;
+    if (auto v = settings->text("mode")) s.mode = parseMediaMode(*v, "--mode");
+    if (auto v = settings->integer("slices", kMinSlices, kMaxSlices)) s.slices = static_cast<int>(*v);
+    if (auto v = settings->integer("slice_resolution", 16, 4096)) s.sliceResolution = static_cast<int>(*v);
+    if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
+    return s;
+}
+
+void gatherSystem(World& world) {
+    auto& frame = world.resource<MediaFrame>();
+    frame.particles.clear();
+    if (world.count<MediumComponent>() == 0) return;
+    frame.settings = readSettings(world.tryResource<Settings>());
+    gatherParticles(world, frame.particles);
+}
+
+void renderSystem(World& world) {
+    auto& frame = world.resource<MediaFrame>();
+    auto& state = world.resource<MediaRendererState>();
+    auto* extensions = world.tryResource<render::RenderExtensions>();
+    if (extensions == nullptr) return;  // a host without the render plugin: nothing to draw into
+    auto& list = extensions->list;
+    const bool active = !frame.particles.empty();
+    if (!active && !state.renderer) return;
+    if (!state.renderer) state.renderer = std::make_unique<MediaRenderer>();
+    auto registered = std::find(list.begin(), list.end(), state.renderer.get());
+    if (active && registered == list.end()) list.push_back(state.renderer.get());
+    if (!active && registered != list.end()) list.erase(registered);
+    state.renderer->prepare(frame.particles, frame.settings);
+}
+
+}  // namespace
+
+void gatherParticles(World& world, ParticleSet& out) {
+    world.view<const MediumComponent, const ParticleCloud, const scene::Transform>().each(
+        [&](Entity, const MediumComponent& medium, const ParticleCloud& cloud, const scene::Transform& transform) {
+            const float scale = radiusScale(transform.world);
+            for (std::size_t i = 0; i < cloud.positions.size(); ++i) {
+                const float density = cloud.densities.empty() ? 1.0f : cloud.densities[i];
+                if (density <= 0.0f) continue;
+                const glm::dvec3 p(transform.world * glm::dvec4(glm::dvec3(cloud.positions[i]), 1.0));
+                out.push(p, cloud.radii[i] * scale, medium.medium.extinction * density, medium.medium);
+            }
+        });
+}
+
+void MediaPlugin::build(nimbus::ecs::App& app) {
+    app.addPlugin<scene::ScenePlugin>();
+    app.addPlugin<render::RenderPlugin>();  // draws nothing until a host enables rendering
+    app.registerComponent<MediumComponent>("Medium");
+    app.registerComponent<ParticleCloud>("ParticleCloud");
+    app.insertResource<MediaFrame>();
+    app.insertResource<MediaRendererState>();
+    if (!app.hasResource<Settings>()) app.insertResource<Settings>();
+    auto& settings = app.resource<Settings>();
+    settings.declare("mode", "media mode: particles (default)");
+    settings.declare("slices", "light slices per light view, 4..32 (default: chosen from the medium)");
+    settings.declare("slice_resolution", "texels per side of a light slice (default 256)");
+    settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
+    app.resource<scene::SceneSpawners>().add("media", spawnMedia);
+    app.addSystem({.name = kLightSliceSystem, .phase = nimbus::ecs::phases::kPrepare}, gatherSystem);
+    app.addSystem({.name = kRenderSystem, .phase = nimbus::ecs::phases::kRender, .before = {render::kRenderFrameSystem}},
+                  renderSystem);
+}
+
+}  // namespace nimbus::media::ecs

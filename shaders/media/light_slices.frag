@@ -1,0 +1,55 @@
+#version 450 core
+// Light slices (DESIGN.md §3): for the light ray through this texel, the particle's optical depth
+// from the light up to each slice plane, in closed form, added into 4 slices per RGBA32F target.
+// Additive blending: no sort, and the order particles arrive in cannot change the result.
+#include "common/math.glsl"
+#include "media/optics.glsl"
+#include "media/particle_data.glsl"
+
+layout(location = 0) uniform mat4 uView;
+layout(location = 2) uniform vec4 uParams;              // x: perspective, y: depth near, z: depth far, w: slices
+layout(location = 3) uniform mat4 uInverseViewProjection;
+layout(location = 4) uniform vec2 uViewportSize;
+layout(location = 6) uniform vec3 uLightOrigin;  // origin-relative light position (perspective views)
+
+flat in int vParticle;
+
+layout(location = 0) out vec4 outSlices[8];
+
+void main() {
+    GpuParticle particle = particles[vParticle];
+    vec2 ndc = gl_FragCoord.xy / uViewportSize * 2.0 - 1.0;
+    vec4 nearPoint = uInverseViewProjection * vec4(ndc, 1.0, 1.0);  // reversed Z: 1 is the near plane
+    nearPoint /= nearPoint.w;
+    vec3 axis = -vec3(uView[0][2], uView[1][2], uView[2][2]);  // light view −Z in world space
+    vec3 origin, dir;
+    float cosAxis;
+    if (uParams.x > 0.5) {
+        origin = uLightOrigin;
+        dir = normalize(nearPoint.xyz - origin);
+        cosAxis = max(dot(dir, axis), 1e-6);
+    } else {
+        float depth = -(uView * vec4(nearPoint.xyz, 1.0)).z;
+        origin = nearPoint.xyz - axis * depth;  // on the view's z = 0 plane, so t equals view depth
+        dir = axis;
+        cosAxis = 1.0;
+    }
+    Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, particle.positionRadius.w);
+    if (chord.halfChord <= 0.0) discard;
+
+    float radius = particle.positionRadius.w;
+    float k = KERNEL_FALLOFF / (radius * radius);
+    float sk = sqrt(k);
+    float scale = particle.albedoSigma.w * exp(-k * chord.b2) * (HALF_SQRT_PI / sk);
+    float entry = erfApprox(-sk * chord.halfChord);
+
+    int slices = int(uParams.w);
+    float spacing = (uParams.z - uParams.y) / uParams.w;
+    vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    for (int s = 0; s < slices; ++s) {
+        float t = (uParams.y + float(s + 1) * spacing) / cosAxis;
+        float u = clamp(t - chord.tClosest, -chord.halfChord, chord.halfChord);
+        values[s / 4][s - 4 * (s / 4)] = scale * (erfApprox(sk * u) - entry);
+    }
+    for (int a = 0; a < 8; ++a) outSlices[a] = values[a];
+}

@@ -1,0 +1,70 @@
+// The medium's mathematics in GLSL, mirroring plugins/participating_media/core/optics.h:
+// truncated Gaussian kernel ρ(r) = exp(−4.5 r²/R²) (r < R), closed-form optical depth of one
+// particle along a ray segment, and the phase functions. Needs common/math.glsl.
+const float KERNEL_FALLOFF = 4.5;
+const float HALF_SQRT_PI = 0.88622692545275801365;
+
+// erf with |error| < 1.5e-7 (Abramowitz & Stegun 7.1.26); GLSL has none.
+float erfApprox(float x) {
+    float a = abs(x);
+    float t = 1.0 / (1.0 + 0.3275911 * a);
+    float poly = ((((1.061405429 * t - 1.453152027) * t + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t;
+    float y = 1.0 - poly * exp(-a * a);
+    return x < 0.0 ? -y : y;
+}
+
+// A unit ray against one particle sphere: closest-approach parameter, squared distance, half chord.
+struct Chord {
+    float tClosest;
+    float b2;
+    float halfChord;  // 0 when the ray misses
+};
+
+Chord chordOf(vec3 origin, vec3 dir, vec3 centre, float radius) {
+    vec3 oc = centre - origin;
+    float tc = dot(oc, dir);
+    vec3 perp = oc - tc * dir;  // not |oc|² − tc²: no cancellation far along the ray
+    float b2 = dot(perp, perp);
+    float r2 = radius * radius;
+    return Chord(tc, b2, b2 < r2 ? sqrt(r2 - b2) : 0.0);
+}
+
+// ∫ exp(−k u²) du over [u0, u1] ∩ [−h, h], times exp(−k b²): the optical depth per unit σ.
+float chordIntegral(Chord c, float radius, float u0, float u1) {
+    float lo = max(u0, -c.halfChord);
+    float hi = min(u1, c.halfChord);
+    if (c.halfChord <= 0.0 || hi <= lo) return 0.0;
+    float k = KERNEL_FALLOFF / (radius * radius);
+    float sk = sqrt(k);
+    return exp(-k * c.b2) * (HALF_SQRT_PI / sk) * (erfApprox(sk * hi) - erfApprox(sk * lo));
+}
+
+// Optical depth of a particle along the ray segment [t0, t1].
+float particleOpticalDepth(Chord c, float radius, float sigma, float t0, float t1) {
+    return sigma * chordIntegral(c, radius, t0 - c.tClosest, t1 - c.tClosest);
+}
+
+// Density-weighted mean position (as u from the closest point) of the kernel on [u0, u1]; the
+// in-scattering of a particle is evaluated there. Falls back to the middle for a vanishing integral.
+float chordCentroid(Chord c, float radius, float u0, float u1) {
+    float lo = max(u0, -c.halfChord);
+    float hi = min(u1, c.halfChord);
+    if (hi <= lo) return 0.5 * (lo + hi);
+    float k = KERNEL_FALLOFF / (radius * radius);
+    float sk = sqrt(k);
+    float mass = (HALF_SQRT_PI / sk) * (erfApprox(sk * hi) - erfApprox(sk * lo));
+    if (mass < 1e-12 * (hi - lo)) return 0.5 * (lo + hi);
+    // ∫ u exp(−k u²) du = −exp(−k u²) / (2k)
+    return clamp((exp(-k * lo * lo) - exp(-k * hi * hi)) / (2.0 * k * mass), lo, hi);
+}
+
+float henyeyGreenstein(float cosTheta, float g) {
+    float denom = max(1.0 + g * g - 2.0 * g * cosTheta, 1e-8);
+    return (1.0 - g * g) / (4.0 * PI * denom * sqrt(denom));
+}
+
+float rayleighPhase(float cosTheta) { return 3.0 / (16.0 * PI) * (1.0 + cosTheta * cosTheta); }
+
+float phaseValue(float phase, float g, float cosTheta) {
+    return phase > 0.5 ? rayleighPhase(cosTheta) : henyeyGreenstein(cosTheta, g);
+}

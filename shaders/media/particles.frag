@@ -1,0 +1,47 @@
+#version 450 core
+// One particle's contribution to one pixel: exact optical depth τ of the kernel along the pixel's
+// ray (clipped at the opaque surface when soft particles are on), opacity α = 1 − e^−τ, and the
+// in-scattered source J at the kernel's centroid on that segment. Output (α·J, α) blends
+// premultiplied over what is behind; the alpha channel accumulates the view transmittance.
+#include "common/math.glsl"
+#include "common/frame.glsl"
+#include "common/lights.glsl"
+#include "common/light_views.glsl"
+#include "common/transmittance.glsl"
+#include "media/optics.glsl"
+#include "media/particle_data.glsl"
+#include "media/lighting.glsl"
+
+layout(binding = 3) uniform sampler2D uSceneDepth;
+layout(location = 0) uniform int uSoftParticles;
+
+flat in int vParticle;
+
+layout(location = 0) out vec4 outColor;
+
+void main() {
+    GpuParticle particle = particles[vParticle];
+    vec3 origin, dir;
+    cameraRay(gl_FragCoord.xy, origin, dir);
+    Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, particle.positionRadius.w);
+    if (chord.halfChord <= 0.0) discard;
+
+    float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r);
+    float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
+    float tEnd = 1e30;
+    if (uSoftParticles != 0) {
+        tEnd = tSurface;  // the exact soft-particle fade: only the part of the kernel in front counts
+    } else if (chord.tClosest > tSurface) {
+        discard;          // classic billboard: the whole particle is hidden once its plane is behind
+    }
+    float radius = particle.positionRadius.w;
+    float u0 = max(0.0, chord.tClosest - chord.halfChord) - chord.tClosest;  // the medium starts at the eye
+    float u1 = min(tEnd - chord.tClosest, chord.halfChord);
+    if (u1 <= u0) discard;
+    float tau = particle.albedoSigma.w * chordIntegral(chord, radius, u0, u1);
+    float alpha = oneMinusExpNeg(tau);
+    if (alpha <= 0.0) discard;
+    vec3 p = origin + dir * (chord.tClosest + chordCentroid(chord, radius, u0, u1));
+    vec3 source = mediumSource(p, dir, particle);
+    outColor = vec4(source * alpha, alpha);
+}
