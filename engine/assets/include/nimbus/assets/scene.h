@@ -23,7 +23,8 @@ struct Image {
     std::string name;
     int width = 0;
     int height = 0;
-    std::vector<std::uint8_t> rgba8;  // row 0 is the top row; values as stored (sRGB-encoded for baseColor)
+    std::vector<std::uint8_t> rgba8;  // row 0 is the top row; values as stored (sRGB-encoded for baseColor),
+                                      // straight alpha; grey / RGB files are expanded, alpha 255 when absent
 };
 
 enum class Wrap { Repeat, ClampToEdge, MirroredRepeat };
@@ -101,7 +102,8 @@ struct Node {
     int mesh = -1;
     int camera = -1;
     int light = -1;
-    nlohmann::json extensions = nlohmann::json::object();  // every node extension, as written
+    nlohmann::json extensions = nlohmann::json::object();  // every node extension, exactly as written
+                                                           // (integers stay integers, empty objects stay)
 };
 
 enum class AnimationPath { Translation, Rotation, Scale };
@@ -149,6 +151,10 @@ struct Scene {
 
 // Loads .gltf or .glb (chosen by content, not by extension). Throws nimbus::InputError with one
 // line naming file, object and field for anything malformed; never returns a partial scene.
+// Buffers and images are data URIs or paths relative to the file (percent-encoding allowed);
+// images are decoded with OpenImageIO (PNG, JPEG, WebP). POINTS and LINES primitives, morph
+// target weights channels are dropped with a log::warn; channels without a target node are
+// ignored, as glTF says.
 Scene loadScene(const std::filesystem::path& file);
 
 // Reads a FLOAT accessor with `components` per element (1 = SCALAR, 3 = VEC3, ...) for a plugin.

@@ -1,6 +1,7 @@
 #pragma once
 // What the renderers ask of a loaded scene at a given time: world transforms (with animation),
 // bounds, the render camera and the lights, resolved to world space in double precision.
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,10 +21,17 @@ struct Aabb {
     glm::dvec3 extent() const { return max - min; }
 };
 
+// Which nodes belong to the scene that is shown: the subtrees of Scene::rootNodes. Nodes outside
+// (other glTF scenes, orphans when the file names a default scene) are not drawn, framed or lit.
+std::vector<bool> nodesInScene(const Scene& scene);
+
+// A node's rest-pose local matrix (its matrix, or T·R·S).
+glm::dmat4 localTransform(const Node& node);
+
 // Local-to-world matrix of every node at `timeSeconds` (animations clamp outside their key range).
 std::vector<glm::dmat4> computeWorldTransforms(const Scene& scene, double timeSeconds);
 
-// World-space bounds of every mesh instance.
+// World-space bounds of every mesh instance in the scene (primitive boxes transformed, so conservative).
 Aabb meshBounds(const Scene& scene, const std::vector<glm::dmat4>& world);
 
 // A camera placed in the world. `synthesized` when the scene had none and one was made to frame it.
@@ -39,7 +47,7 @@ struct ResolvedCamera {
     glm::dvec3 right() const;    // unit, world space
 };
 
-// The scene's first camera (lowest node index carrying one), or the camera whose camera name or node
+// The scene's first camera (lowest node index in the scene carrying one), or the camera whose camera name or node
 // name is `name`. With no camera in the scene and no name asked, one is made that frames `frame`
 // (the caller passes mesh bounds plus anything else visible, e.g. media). Throws InputError when
 // `name` matches nothing.

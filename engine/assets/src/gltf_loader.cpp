@@ -1,0 +1,292 @@
+// loadScene: read the file, check its structure, let tinygltf load buffers and images (decoded
+// with OpenImageIO), then build the Scene while checking the data itself. Nothing is returned
+// unless everything passed, so a Scene that exists is complete and in range.
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "document.h"
+#include "gltf_accessor.h"
+#include "gltf_animation_builder.h"
+#include "gltf_checks.h"
+#include "gltf_container.h"
+#include "gltf_image_decoder.h"
+#include "gltf_mesh_builder.h"
+#include "json_fields.h"
+#include "nimbus/assets/scene.h"
+#include "nimbus/assets/scene_queries.h"
+#include "nimbus/base/error.h"
+#include "nimbus/base/log.h"
+
+namespace nimbus::assets {
+namespace {
+
+// ---- tinygltf file access ------------------------------------------------------------------
+// tinygltf looks for a relative URI next to the glTF file and then in the current directory; the
+// second would make loading depend on where the program runs, so only the first is allowed. Its
+// default path expansion (wordexp) is replaced by the identity: URIs are not shell words.
+struct FileAccess {
+    std::string baseDirectory;  // with a trailing separator
+};
+
+bool fileExistsBesideGltf(const std::string& path, void* user) {
+    const auto& access = *static_cast<const FileAccess*>(user);
+    if (path.rfind(access.baseDirectory, 0) != 0) return false;
+    std::error_code ec;
+    return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string expandNothing(const std::string& path, void*) { return path; }
+
+// tinygltf's messages end lines with '\n' and may quote whole data URIs: keep one short line.
+std::string oneLine(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    if (text.size() > 300) text = text.substr(0, 297) + "...";
+    return text;
+}
+
+tinygltf::Model loadWithTinyGltf(const GltfSource& src, const std::string& name, const std::filesystem::path& baseDirectory) {
+    tinygltf::TinyGLTF loader;
+    ImageDecodeContext images{&name, &src.json, {}};
+    loader.SetImageLoader(&decodeGltfImage, &images);
+    FileAccess access{(baseDirectory / "").string()};
+    loader.SetFsCallbacks({&fileExistsBesideGltf, &expandNothing, &tinygltf::ReadWholeFile, &tinygltf::WriteWholeFile, &access});
+
+    tinygltf::Model model;
+    std::string err, warn;
+    const auto size = static_cast<unsigned int>(src.bytes.size());
+    const bool ok = src.binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, src.bytes.data(), size, baseDirectory.string())
+                               : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(src.bytes.data()),
+                                                            size, baseDirectory.string());
+    if (!warn.empty()) log::debug(name + ": tinygltf: " + oneLine(warn));
+    if (!images.failure.empty()) throw InputError(images.failure);
+    if (!ok) throwInputError(name, "", "", "tinygltf refused the file: " + oneLine(err));
+    return model;
+}
+
+// ---- scene parts ---------------------------------------------------------------------------
+
+const Json& jsonElement(const Json& root, const char* array, std::size_t i) { return root[array][i]; }
+
+std::vector<Image> takeImages(tinygltf::Model& model, const Json& root, const std::string& name) {
+    std::vector<Image> images(model.images.size());
+    for (std::size_t i = 0; i < model.images.size(); ++i) {
+        tinygltf::Image& src = model.images[i];
+        const std::size_t expected = static_cast<std::size_t>(std::max(src.width, 0)) * static_cast<std::size_t>(std::max(src.height, 0)) * 4;
+        if (src.image.empty() || src.image.size() != expected || src.component != 4 || src.bits != 8)
+            throwInputError(name, describeObject("image", "images", i, jsonElement(root, "images", i)), "uri",
+                            "the image could not be read");
+        images[i].name = !src.name.empty() ? src.name : src.uri;
+        images[i].width = src.width;
+        images[i].height = src.height;
+        images[i].rgba8 = std::move(src.image);  // pixels live in the Scene; the model keeps uri / bufferView
+        src.image.clear();
+    }
+    return images;
+}
+
+Wrap wrapFromGl(int mode) {
+    if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return Wrap::ClampToEdge;
+    if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return Wrap::MirroredRepeat;
+    return Wrap::Repeat;
+}
+
+std::vector<Texture> buildTextures(const tinygltf::Model& model, const Json& root) {
+    std::vector<Texture> textures(model.textures.size());
+    for (std::size_t i = 0; i < model.textures.size(); ++i) {
+        const tinygltf::Texture& src = model.textures[i];
+        Texture& t = textures[i];
+        t.image = src.source;
+        if (t.image < 0) {  // EXT_texture_webp may carry the only source
+            const Json& j = jsonElement(root, "textures", i);
+            if (j.contains("extensions") && j["extensions"].contains("EXT_texture_webp"))
+                t.image = j["extensions"]["EXT_texture_webp"].value("source", -1);
+        }
+        if (src.sampler < 0) continue;
+        const tinygltf::Sampler& s = model.samplers[static_cast<std::size_t>(src.sampler)];
+        t.wrapS = wrapFromGl(s.wrapS);
+        t.wrapT = wrapFromGl(s.wrapT);
+        t.magFilter = s.magFilter == TINYGLTF_TEXTURE_FILTER_NEAREST ? Filter::Nearest : Filter::Linear;
+        switch (s.minFilter) {
+            case TINYGLTF_TEXTURE_FILTER_NEAREST: t.minFilter = Filter::Nearest; t.mipmaps = false; break;
+            case TINYGLTF_TEXTURE_FILTER_LINEAR: t.minFilter = Filter::Linear; t.mipmaps = false; break;
+            case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_NEAREST:
+            case TINYGLTF_TEXTURE_FILTER_NEAREST_MIPMAP_LINEAR: t.minFilter = Filter::Nearest; t.mipmaps = true; break;
+            default: t.minFilter = Filter::Linear; t.mipmaps = true; break;  // mipmapped linear, or left to us
+        }
+    }
+    return textures;
+}
+
+std::vector<Material> buildMaterials(const tinygltf::Model& model, const Json& root, const std::vector<Texture>& textures,
+                                     const std::string& name) {
+    std::vector<Material> materials(model.materials.size());
+    for (std::size_t i = 0; i < model.materials.size(); ++i) {
+        const tinygltf::Material& src = model.materials[i];
+        Material& m = materials[i];
+        m.name = src.name;
+        const std::vector<double>& f = src.pbrMetallicRoughness.baseColorFactor;
+        if (f.size() == 4) m.baseColorFactor = glm::vec4(glm::dvec4(f[0], f[1], f[2], f[3]));
+        m.baseColorTexture = src.pbrMetallicRoughness.baseColorTexture.index;
+        m.baseColorTexCoord = src.pbrMetallicRoughness.baseColorTexture.texCoord;
+        m.doubleSided = src.doubleSided;
+        if (m.baseColorTexture >= 0 && textures[static_cast<std::size_t>(m.baseColorTexture)].image < 0)
+            throwInputError(name, describeObject("material", "materials", i, jsonElement(root, "materials", i)),
+                            "pbrMetallicRoughness.baseColorTexture",
+                            "textures[" + std::to_string(m.baseColorTexture) + "] has no image Nimbus can decode");
+    }
+    return materials;
+}
+
+std::vector<Camera> buildCameras(const tinygltf::Model& model) {
+    std::vector<Camera> cameras(model.cameras.size());
+    for (std::size_t i = 0; i < model.cameras.size(); ++i) {
+        const tinygltf::Camera& src = model.cameras[i];
+        Camera& c = cameras[i];
+        c.name = src.name;
+        if (src.type == "orthographic") {
+            c.projection = Projection::Orthographic;
+            c.xmag = src.orthographic.xmag;
+            c.ymag = src.orthographic.ymag;
+            c.znear = src.orthographic.znear;
+            c.zfar = src.orthographic.zfar;
+        } else {
+            c.projection = Projection::Perspective;
+            c.yfov = src.perspective.yfov;
+            c.aspectRatio = src.perspective.aspectRatio;
+            c.znear = src.perspective.znear;
+            c.zfar = src.perspective.zfar;
+        }
+    }
+    return cameras;
+}
+
+// KHR_lights_punctual, from the root extension's "lights" array (checked in gltf_check_scene.cpp);
+// read from the JSON rather than tinygltf's Model::lights so defaults are the spec's, not the reader's.
+std::vector<Light> buildLights(const Json& root) {
+    const Json& lights = punctualLights(root);
+    std::vector<Light> out(lights.size());
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const Json& l = lights[i];
+        Light& light = out[i];
+        light.name = l.value("name", "");
+        const std::string type = l["type"].get<std::string>();
+        light.type = type == "point" ? LightType::Point : type == "spot" ? LightType::Spot : LightType::Directional;
+        if (l.contains("color")) light.color = glm::vec3(glm::dvec3(l["color"][0].get<double>(), l["color"][1].get<double>(), l["color"][2].get<double>()));
+        light.intensity = static_cast<float>(l.value("intensity", 1.0));
+        light.range = l.value("range", 0.0);
+        if (light.type == LightType::Spot) {
+            light.innerConeAngle = l["spot"].value("innerConeAngle", 0.0);
+            light.outerConeAngle = l["spot"].value("outerConeAngle", 0.7853981633974483);
+        }
+    }
+    return out;
+}
+
+std::vector<Node> buildNodes(const tinygltf::Model& model, const Json& root) {
+    std::vector<Node> nodes(model.nodes.size());
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+        const tinygltf::Node& src = model.nodes[i];
+        Node& n = nodes[i];
+        n.name = src.name;
+        n.children = src.children;
+        n.mesh = src.mesh;
+        n.camera = src.camera;
+        if (src.matrix.size() == 16) {
+            n.hasMatrix = true;
+            n.matrix = glm::make_mat4(src.matrix.data());  // glTF and GLM are both column-major
+        }
+        if (src.translation.size() == 3) n.translation = glm::make_vec3(src.translation.data());
+        if (src.scale.size() == 3) n.scale = glm::make_vec3(src.scale.data());
+        if (src.rotation.size() == 4)  // glTF stores x, y, z, w; checked to be within 1% of unit length
+            n.rotation = glm::normalize(glm::dquat(src.rotation[3], src.rotation[0], src.rotation[1], src.rotation[2]));
+        const Json& j = jsonElement(root, "nodes", i);
+        if (j.contains("extensions")) {
+            n.extensions = j["extensions"];
+            if (n.extensions.contains("KHR_lights_punctual")) n.light = n.extensions["KHR_lights_punctual"]["light"].get<int>();
+        }
+    }
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        for (const int c : nodes[i].children) nodes[static_cast<std::size_t>(c)].parent = static_cast<int>(i);
+    return nodes;
+}
+
+std::vector<int> findRootNodes(const Json& root, const std::vector<Node>& nodes) {
+    std::vector<int> roots;
+    if (root.contains("scene")) {
+        const Json& scene = root["scenes"][root["scene"].get<std::size_t>()];
+        if (scene.contains("nodes")) roots = scene["nodes"].get<std::vector<int>>();
+        return roots;
+    }
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        if (nodes[i].parent < 0) roots.push_back(static_cast<int>(i));
+    return roots;
+}
+
+glm::vec3 readColor(const Json& object, const char* key) {
+    if (!object.contains(key)) return glm::vec3(0.0f);
+    const Json& c = object[key];
+    return glm::vec3(glm::dvec3(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()));
+}
+
+// Values that are finite one by one can still overflow when composed (a scale of 1e200 twice).
+void checkWorldTransformsFinite(const Scene& scene, const Json& root) {
+    const std::vector<glm::dmat4> world = computeWorldTransforms(scene, 0.0);
+    for (std::size_t i = 0; i < world.size(); ++i)
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                if (!std::isfinite(world[i][c][r]))
+                    throwInputError(scene.displayName(), describeObject("node", "nodes", i, jsonElement(root, "nodes", i)),
+                                    scene.nodes[i].hasMatrix ? "matrix" : "translation/rotation/scale",
+                                    "the world transform is not finite (values too large)");
+}
+
+}  // namespace
+
+std::string Scene::displayName() const { return document ? document->displayName : path.string(); }
+
+Scene loadScene(const std::filesystem::path& file) {
+    const std::string name = file.string();
+    GltfSource src = readGltfSource(file, name);
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(file, ec);
+    const std::filesystem::path baseDirectory = (ec ? file : absolute).parent_path();
+
+    checkGltfStructure({&src.json, name, baseDirectory, src.binary, src.binChunkSize});
+
+    auto document = std::make_shared<Document>();
+    document->path = file;
+    document->displayName = name;
+    document->model = loadWithTinyGltf(src, name, baseDirectory);
+    document->json = std::move(src.json);
+    tinygltf::Model& model = document->model;
+    const Json& root = document->json;
+
+    Scene scene;
+    scene.path = file;
+    scene.images = takeImages(model, root, name);
+    scene.textures = buildTextures(model, root);
+    scene.materials = buildMaterials(model, root, scene.textures, name);
+    scene.meshes = buildMeshes(model, root, name);
+    scene.cameras = buildCameras(model);
+    scene.lights = buildLights(root);
+    scene.nodes = buildNodes(model, root);
+    scene.rootNodes = findRootNodes(root, scene.nodes);
+    scene.animations = buildAnimations(model, root, name);
+    if (root.contains("extensions")) {
+        scene.extensions = root["extensions"];
+        if (scene.extensions.contains(kMediaExtension)) {
+            const Json& media = scene.extensions[kMediaExtension];
+            scene.environment.background = readColor(media, "background");
+            scene.environment.ambient = readColor(media, "ambient");
+        }
+    }
+    scene.document = document;
+    checkWorldTransformsFinite(scene, root);
+    return scene;
+}
+
+}  // namespace nimbus::assets
