@@ -16,6 +16,7 @@
 #include "nimbus/base/error.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/gpu/context.h"
+#include "nimbus/media/ecs/media_plugin.h"
 #include "nimbus/render/pass_timer.h"
 #include "nimbus/render/render_plugin.h"
 #include "session.h"
@@ -25,7 +26,7 @@ namespace {
 
 struct RenderOptions {
     std::string scene;
-    std::string out;
+    std::vector<std::string> out;
     std::string size = "1280x720";
     std::string mode;
     double time = 0.0;
@@ -86,7 +87,7 @@ int run(const RenderOptions& o) {
     auto& state = app.resource<render::RendererState>();
     const assets::RgbImage image = state.renderer->readOutput();
     const gpu::GlErrorReport errors = context->takeGlErrors();
-    if (!o.out.empty()) assets::writeImage(o.out, image, {o.exposure});
+    for (const auto& file : o.out) assets::writeImage(file, image, {o.exposure});
 
     if (!o.stats.empty()) {
         stats["scene"] = o.scene;
@@ -98,6 +99,13 @@ int run(const RenderOptions& o) {
         stats["gl_version"] = context->version();
         stats["gl_errors"] = errors.count;
         stats["active_passes"] = state.renderer->lastActivePasses();
+        if (const auto* media = app.world().tryResource<media::ecs::MediaRendererState>(); media && media->renderer) {
+            const auto& frame = app.world().resource<media::ecs::MediaFrame>();
+            stats["media_mode"] = media::mediaModeName(frame.settings.mode);
+            stats["media_particles"] = media->renderer->stats().particles;
+            stats["media_slices"] = media->renderer->stats().slices;
+            stats["media_slice_views"] = media->renderer->stats().sliceViews;
+        }
         std::ofstream file(o.stats);
         if (!file) throwInputError(o.stats, "", "", "cannot write the stats file");
         file << stats.dump(2) << "\n";
@@ -107,8 +115,10 @@ int run(const RenderOptions& o) {
                      static_cast<unsigned long long>(errors.count), errors.first.c_str());
         return 1;
     }
-    std::printf("rendered %s at %dx%d (camera %s, t=%.3f s)%s%s\n", o.scene.c_str(), width, height,
-                state.lastInput.camera.name.c_str(), session.time(), o.out.empty() ? "" : " -> ", o.out.c_str());
+    std::string outputs;
+    for (const auto& file : o.out) outputs += (outputs.empty() ? " -> " : ", ") + file;
+    std::printf("rendered %s at %dx%d (camera %s, t=%.3f s)%s\n", o.scene.c_str(), width, height,
+                state.lastInput.camera.name.c_str(), session.time(), outputs.c_str());
     if (stats.contains("frame_ms"))
         std::printf("frame_ms %.3f (median of %d, %s)\n", stats["frame_ms"].get<double>(), o.frames, context->renderer().c_str());
     return 0;
@@ -120,7 +130,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     auto options = std::make_shared<RenderOptions>();
     auto* cmd = app.add_subcommand("render", "render a scene with the real-time renderer (headless)");
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
-    cmd->add_option("--out", options->out, "output image: .exr (linear radiance) or .png (sRGB)");
+    cmd->add_option("--out", options->out, "output image: .exr (linear radiance) or .png (sRGB); repeatable");
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
     cmd->add_option("--mode", options->mode, "media mode: particles (default)");
     cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));
