@@ -3,6 +3,9 @@ add_library(nimbus_options INTERFACE)
 target_compile_options(nimbus_options INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
   -Woverloaded-virtual -Wnull-dereference -Wimplicit-fallthrough
+  # Descriptor structs are filled with designated initialisers that name only what differs from
+  # the member defaults (sokol style); GCC's -Wextra would flag every omitted member.
+  -Wno-missing-field-initializers
   $<$<BOOL:${NIMBUS_WERROR}>:-Werror>)
 target_compile_definitions(nimbus_options INTERFACE
   GLM_ENABLE_EXPERIMENTAL

@@ -1,0 +1,48 @@
+#pragma once
+// Light arriving at points of the scene (DESIGN.md §2): per light, the irradiance E_l
+// (assets::sampleLight) × mesh visibility V_l (Embree) × medium transmittance T_l (closed form over the
+// particles the BVH finds). Used for the in-scattering source at medium points and for mesh shading.
+//
+// Does not: integrate along view rays (reference_renderer.cpp does), or cache anything between calls.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "nimbus/assets/scene_queries.h"
+#include "nimbus/media/particle_bvh.h"
+#include "nimbus/media/particle_set.h"
+#include "nimbus/raycast/mesh_raycaster.h"
+#include "view_ray_medium.h"
+
+namespace nimbus::media::reference {
+
+// Optical depth beyond which light is treated as fully absorbed: exp(-64) < 2e-28.
+inline constexpr double kOpaqueDepth = 64.0;
+
+class LightTransport {
+public:
+    LightTransport(const std::vector<assets::ResolvedLight>& lights, const raycast::MeshRaycaster& meshes,
+                   const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& ambient);
+
+    // T_l: exp(-τ) through every particle on the segment x + s·toLight, s in [0, distance].
+    double transmittanceToLight(const glm::dvec3& x, const glm::dvec3& toLight, double distance) const;
+
+    // The σ-weighted source S̄ at ray parameter t of a view ray (x = origin + t·dir), from the active
+    // particles of `piece`:
+    //   S̄ = Σ_i w_i [a_i (Σ_l p_i(θ_l) E_l V_l T_l + L_amb) + e_i] / Σ_i w_i,   w_i = σ_i ρ_i(x).
+    glm::dvec3 mediumSource(const glm::dvec3& origin, const glm::dvec3& dir, const ViewRayMedium& medium,
+                            std::uint32_t piece, double t, std::vector<double>& weights) const;
+
+    // L_s = baseColor/π Σ_l E_l max(0, n·l) V_l T_l + baseColor L_amb at a mesh hit seen along dir.
+    glm::dvec3 surfaceRadiance(const raycast::MeshHit& hit, const glm::dvec3& dir, bool doubleSided,
+                               const glm::dvec3& baseColor) const;
+
+private:
+    const std::vector<assets::ResolvedLight>& lights_;
+    const raycast::MeshRaycaster& meshes_;
+    const ParticleBvh& bvh_;
+    const ParticleSet& particles_;
+    glm::dvec3 ambient_;
+};
+
+}  // namespace nimbus::media::reference

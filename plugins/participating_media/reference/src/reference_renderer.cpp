@@ -1,0 +1,202 @@
+#include "nimbus/media/reference/reference_renderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <stdexcept>
+#include <thread>
+
+#include "base_color.h"
+#include "light_transport.h"
+#include "medium_quadrature.h"
+#include "nimbus/assets/light_model.h"
+#include "nimbus/base/progress.h"
+#include "nimbus/media/optics.h"
+#include "nimbus/media/particle_bvh.h"
+#include "nimbus/media/reference/camera_rays.h"
+#include "nimbus/raycast/mesh_raycaster.h"
+#include "view_ray_medium.h"
+
+namespace nimbus::media::reference {
+namespace {
+
+constexpr int kTileSize = 16;
+
+double maxChannel(const glm::dvec3& v) { return std::max({v.x, v.y, v.z}); }
+
+// Per-thread working memory, reused from ray to ray.
+struct Scratch {
+    ViewRayMedium medium;
+    MediumQuadrature quadrature;
+    std::vector<double> weights;
+};
+
+}  // namespace
+
+struct ReferenceRenderer::Impl {
+    ReferenceInputs inputs;
+    ReferenceSettings settings;
+    ParticleSet noParticles;
+    const ParticleSet* particles = nullptr;
+    ParticleBvh bvh;
+    std::unique_ptr<raycast::MeshRaycaster> meshes;
+    std::unique_ptr<BaseColorSampler> baseColor;
+    std::unique_ptr<LightTransport> light;
+    CameraFrame frame;
+    glm::dvec3 background{0.0}, ambient{0.0};
+    double floor = 0.0;
+
+    RayRadiance trace(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear, double meshFar,
+                      Scratch& scratch) const;
+    bool doubleSided(int material) const {
+        return material >= 0 && static_cast<std::size_t>(material) < inputs.scene->materials.size() &&
+               inputs.scene->materials[static_cast<std::size_t>(material)].doubleSided;
+    }
+};
+
+ReferenceRenderer::ReferenceRenderer(const ReferenceInputs& inputs, const ReferenceSettings& settings)
+    : impl_(std::make_unique<Impl>()) {
+    if (!inputs.scene || !inputs.world) throw std::invalid_argument("reference: inputs need a scene and its world transforms");
+    if (settings.width <= 0 || settings.height <= 0) throw std::invalid_argument("reference: image size must be positive");
+    if (!(settings.tolerance > 0.0)) throw std::invalid_argument("reference: tolerance must be > 0");
+    Impl& m = *impl_;
+    m.inputs = inputs;
+    m.settings = settings;
+    m.particles = inputs.particles ? inputs.particles : &m.noParticles;
+    m.bvh.build(*m.particles);
+    m.meshes = std::make_unique<raycast::MeshRaycaster>(*inputs.scene, *inputs.world);
+    m.baseColor = std::make_unique<BaseColorSampler>(*inputs.scene);
+    m.background = glm::dvec3(inputs.scene->environment.background);
+    m.ambient = glm::dvec3(inputs.scene->environment.ambient);
+    m.light = std::make_unique<LightTransport>(m.inputs.lights, *m.meshes, m.bvh, *m.particles, m.ambient);
+    m.frame = makeCameraFrame(inputs.camera, settings.width, settings.height);
+
+    // The scene's radiance scale, for the quadrature's absolute floor (reference_renderer.h).
+    double scale = std::max(maxChannel(m.background), maxChannel(m.ambient));
+    for (const glm::vec3& e : m.particles->emission) scale = std::max(scale, static_cast<double>(std::max({e.x, e.y, e.z})));
+    glm::dvec3 centre(0.0);
+    if (!m.bvh.empty()) {
+        centre = 0.5 * (m.bvh.boundsMin() + m.bvh.boundsMax());
+    } else if (!m.meshes->empty()) {
+        centre = m.meshes->origin();
+    }
+    for (const assets::ResolvedLight& l : m.inputs.lights)
+        scale = std::max(scale, maxChannel(assets::sampleLight(l, centre).irradiance) / kPi);
+    m.floor = settings.tolerance * 1e-3 * scale;
+}
+
+ReferenceRenderer::~ReferenceRenderer() = default;
+
+double ReferenceRenderer::absoluteFloor() const { return impl_->floor; }
+
+RayRadiance ReferenceRenderer::Impl::trace(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear,
+                                           double meshFar, Scratch& scratch) const {
+    RayRadiance out;
+    const std::optional<raycast::MeshHit> hit = meshes->closestHit(origin, dir, meshNear, meshFar);
+    out.hitMesh = hit.has_value();
+    out.distance = hit ? hit->distance : meshFar;
+
+    scratch.medium.build(bvh, *particles, origin, dir, out.distance);
+    out.opticalDepth = scratch.medium.totalOpticalDepth();
+    out.transmittance = transmittance(out.opticalDepth);
+
+    glm::dvec3 behind(0.0);  // T(0,d) L_s; skipped when nothing of it gets through
+    if (out.transmittance > 0.0) {
+        out.surface = hit ? light->surfaceRadiance(*hit, dir, doubleSided(hit->material), baseColor->at(*hit)) : background;
+        behind = out.transmittance * out.surface;
+    }
+    out.radiance = behind;
+    if (scratch.medium.empty()) return out;
+
+    QuadratureSettings q;
+    q.tolerance = settings.tolerance;
+    q.absoluteFloor = floor;
+    const ViewRayMedium& medium = scratch.medium;
+    std::vector<double>& weights = scratch.weights;
+    const SourceFunction source = [&](const RaySample& s) {
+        return light->mediumSource(origin, dir, medium, s.piece, s.t, weights);
+    };
+    const QuadratureResult r = scratch.quadrature.integrate(medium, source, behind, q);
+    out.inScattered = r.value;
+    out.radiance += r.value;
+    out.evaluations = r.evaluations;
+    out.converged = r.converged;
+    return out;
+}
+
+RayRadiance ReferenceRenderer::traceRay(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear,
+                                        double meshFar) const {
+    Scratch scratch;
+    return impl_->trace(origin, glm::normalize(dir), meshNear, meshFar, scratch);
+}
+
+RayRadiance ReferenceRenderer::tracePixel(int x, int y) const {
+    const CameraRay ray = cameraRay(impl_->frame, x, y);
+    Scratch scratch;
+    return impl_->trace(ray.origin, ray.direction, ray.meshNear, ray.meshFar, scratch);
+}
+
+assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats) const {
+    const Impl& m = *impl_;
+    const auto start = std::chrono::steady_clock::now();
+    const int width = m.settings.width, height = m.settings.height;
+    assets::RgbImage image(width, height);
+    const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
+    const int tiles = tilesX * tilesY;
+    int threads = m.settings.threads > 0 ? m.settings.threads : static_cast<int>(std::thread::hardware_concurrency());
+    threads = std::clamp(threads, 1, std::max(1, tiles));
+
+    std::unique_ptr<ProgressBar> progress;
+    if (m.settings.progress) progress = std::make_unique<ProgressBar>("reference", static_cast<std::size_t>(tiles));
+    std::atomic<int> nextTile{0};
+    std::vector<std::size_t> evaluations(static_cast<std::size_t>(threads), 0), unconverged(static_cast<std::size_t>(threads), 0);
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
+
+    // Tiles are handed out dynamically, but every pixel is computed from the inputs alone and written
+    // to its own place, so the image does not depend on which thread did what.
+    auto work = [&](std::size_t worker) {
+        try {
+            Scratch scratch;
+            for (int tile = nextTile.fetch_add(1); tile < tiles; tile = nextTile.fetch_add(1)) {
+                const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
+                for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
+                    for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
+                        const CameraRay ray = cameraRay(m.frame, x, y);
+                        const RayRadiance r = m.trace(ray.origin, ray.direction, ray.meshNear, ray.meshFar, scratch);
+                        image.set(x, y, glm::vec3(r.radiance));
+                        evaluations[worker] += static_cast<std::size_t>(r.evaluations);
+                        unconverged[worker] += r.converged ? 0 : 1;
+                    }
+                if (progress) progress->advance();
+            }
+        } catch (...) {
+            errors[worker] = std::current_exception();
+            nextTile.store(tiles);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, static_cast<std::size_t>(t));
+    work(0);
+    for (std::thread& t : pool) t.join();
+    if (progress) progress->finish();
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
+
+    if (stats) {
+        stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats->evaluations = 0;
+        stats->unconvergedPixels = 0;
+        for (std::size_t t = 0; t < evaluations.size(); ++t) {
+            stats->evaluations += evaluations[t];
+            stats->unconvergedPixels += unconverged[t];
+        }
+    }
+    return image;
+}
+
+assets::RgbImage renderReference(const ReferenceInputs& inputs, const ReferenceSettings& settings, ReferenceStats* stats) {
+    return ReferenceRenderer(inputs, settings).render(stats);
+}
+
+}  // namespace nimbus::media::reference

@@ -1,0 +1,82 @@
+#pragma once
+// The medium along one camera ray, in closed form: the particles it crosses, split into pieces at
+// every chord endpoint (inside a piece the same particles are active, so everything is smooth), the
+// exact optical depth of each piece, and clusters of overlapping chords. It answers "where along the
+// ray has the optical depth since the cluster start reached s?" (Newton on the closed form), which
+// is how the quadrature places its samples (reference_renderer.h, "Quadrature").
+//
+// Does not: evaluate lighting; own the particles (indices into the ParticleSet).
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "nimbus/media/particle_bvh.h"
+#include "nimbus/media/particle_set.h"
+
+namespace nimbus::media::reference {
+
+// Along the ray a particle's extinction is σ_i ρ_i(t) = peak · exp(-(√k (t - tClosest))²), so its optical
+// depth from t0 to t1 is scale · [erf(√k (t1 - tClosest)) - erf(√k (t0 - tClosest))].
+struct RayParticle {
+    std::uint32_t index = 0;  // into the ParticleSet
+    double tClosest = 0.0, b2 = 0.0, halfChord = 0.0;
+    double enter = 0.0, exit = 0.0;  // chord clipped to [0, end]
+    double sigma = 0.0, radius = 0.0;
+    double sqrtK = 0.0;              // √(4.5)/R
+    double peak = 0.0;               // σ exp(-k b²): extinction at the closest point
+    double scale = 0.0;              // peak · √π / (2√k)
+};
+
+struct RayCluster {
+    std::uint32_t firstPiece = 0, endPiece = 0;  // pieces [first, end)
+    double opticalDepthBefore = 0.0;             // τ from the eye to the cluster start
+    double opticalDepth = 0.0;                   // τ across the cluster
+};
+
+// Where a sample landed: the ray parameter and the piece (for its active particles).
+struct RaySample {
+    double t = 0.0;
+    std::uint32_t piece = 0;
+};
+
+class ViewRayMedium {
+public:
+    // Collects the particles on origin + t·dir, t in [0, end] (end may be +inf).
+    void build(const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& origin, const glm::dvec3& dir,
+               double end);
+
+    bool empty() const { return clusters_.empty(); }
+    // τ(0, end): the direct sum of each particle's closed form over its whole (clipped) chord.
+    double totalOpticalDepth() const { return totalOpticalDepth_; }
+    const std::vector<RayCluster>& clusters() const { return clusters_; }
+    const std::vector<RayParticle>& particles() const { return rayParticles_; }
+
+    // The active particles of a piece (indices into particles()).
+    const std::uint32_t* activeBegin(std::uint32_t piece) const { return active_.data() + activeStart_[piece]; }
+    const std::uint32_t* activeEnd(std::uint32_t piece) const { return active_.data() + activeStart_[piece + 1]; }
+
+    // The point of cluster c where the optical depth since the cluster start equals s (0 <= s <= τ_c).
+    RaySample locate(std::uint32_t cluster, double s) const;
+
+    // The inverse of locate: the optical depth from cluster c's start to ray parameter t (clamped to
+    // the cluster), and the cluster's extent along the ray.
+    double opticalDepthTo(std::uint32_t cluster, double t) const;
+    double clusterStart(std::uint32_t cluster) const { return breaks_[clusters_[cluster].firstPiece]; }
+    double clusterEnd(std::uint32_t cluster) const { return breaks_[clusters_[cluster].endPiece]; }
+
+    // Σ σ_i ρ_i over a piece's active particles at ray parameter t, and each term into `terms`.
+    double extinctionAt(std::uint32_t piece, double t, std::vector<double>* terms = nullptr) const;
+
+private:
+    std::vector<RayParticle> rayParticles_;
+    std::vector<double> breaks_;            // piece k is [breaks_[k], breaks_[k+1]]
+    std::vector<double> cumulative_;        // τ from the cluster start to breaks_[k] (per cluster)
+    std::vector<std::uint32_t> activeStart_, active_;  // CSR: active particles of each piece
+    std::vector<double> activeErfStart_;    // per CSR entry: erf(√k (piece start - tClosest))
+    std::vector<RayCluster> clusters_;
+    std::vector<std::uint32_t> candidates_;
+    double totalOpticalDepth_ = 0.0;
+};
+
+}  // namespace nimbus::media::reference
