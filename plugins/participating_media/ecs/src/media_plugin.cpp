@@ -5,6 +5,8 @@
 
 #include "nimbus/base/log.h"
 #include "nimbus/base/settings.h"
+#include "nimbus/ecs/frame_info.h"
+#include "nimbus/media/emitter_scene.h"
 #include "nimbus/render/render_plugin.h"
 #include "nimbus/scene/components.h"
 #include "nimbus/scene/scene_plugin.h"
@@ -14,9 +16,6 @@ namespace {
 
 using nimbus::ecs::Entity;
 using nimbus::ecs::World;
-
-// A uniform scale scales radii; cbrt|det| is the uniform part of any scale (media_scene.h documents it).
-float radiusScale(const glm::dmat4& world) { return static_cast<float>(std::cbrt(std::abs(glm::determinant(glm::dmat3(world))))); }
 
 void spawnMedia(World& world, const assets::Scene& scene) {
     const MediaScene media = parseMediaScene(scene);  // throws before anything is added
@@ -28,8 +27,13 @@ void spawnMedia(World& world, const assets::Scene& scene) {
     for (const MediaNode& node : media.nodes) {
         const Entity e = byNode.at(static_cast<std::size_t>(node.node));
         world.emplace<MediumComponent>(e, MediumComponent{node.medium});
+        if (!node.localPositions.empty() && !hasUniformScale(world.get<scene::Transform>(e).world))
+            log::warn(scene.displayName() + ": node \"" + node.name + "\": non-uniform scale on a particle cloud; radii use the mean scale");
         if (!node.localPositions.empty())
             world.emplace<ParticleCloud>(e, ParticleCloud{node.localPositions, node.radii, node.densities});
+        if (!node.emitter.is_null())
+            world.emplace<EmitterComponent>(e, EmitterComponent{EmitterSimulation(parseNodeEmitter(scene, node), node.node),
+                                                                world.get<scene::Transform>(e).world});
     }
 }
 
@@ -41,6 +45,18 @@ MediaRenderSettings readSettings(const Settings* settings) {
     if (auto v = settings->integer("slice_resolution", 16, 4096)) s.sliceResolution = static_cast<int>(*v);
     if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
     return s;
+}
+
+// One fixed step for every emitter: [k·dt, (k+1)·dt] with the node's transform at both ends (the
+// animation system has already moved it to the end). t0 comes from FrameInfo as k·dt, a product,
+// exactly as simulateEmittersTo computes it, so both paths give bit-identical particles.
+void emitSystem(World& world) {
+    if (world.count<EmitterComponent>() == 0) return;
+    const auto& frame = world.resource<nimbus::ecs::FrameInfo>();
+    world.view<EmitterComponent, const scene::Transform>().each([&](Entity, EmitterComponent& emitter, const scene::Transform& transform) {
+        emitter.simulation.step(frame.time, frame.timeStep, emitter.previousWorld, transform.world);
+        emitter.previousWorld = transform.world;
+    });
 }
 
 void gatherSystem(World& world) {
@@ -71,14 +87,10 @@ void renderSystem(World& world) {
 void gatherParticles(World& world, ParticleSet& out) {
     world.view<const MediumComponent, const ParticleCloud, const scene::Transform>().each(
         [&](Entity, const MediumComponent& medium, const ParticleCloud& cloud, const scene::Transform& transform) {
-            const float scale = radiusScale(transform.world);
-            for (std::size_t i = 0; i < cloud.positions.size(); ++i) {
-                const float density = cloud.densities.empty() ? 1.0f : cloud.densities[i];
-                if (density <= 0.0f) continue;
-                const glm::dvec3 p(transform.world * glm::dvec4(glm::dvec3(cloud.positions[i]), 1.0));
-                out.push(p, cloud.radii[i] * scale, medium.medium.extinction * density, medium.medium);
-            }
+            appendCloudParticles(out, medium.medium, cloud.positions, cloud.radii, cloud.densities, transform.world);
         });
+    world.view<const MediumComponent, const EmitterComponent>().each(
+        [&](Entity, const MediumComponent& medium, const EmitterComponent& emitter) { emitter.simulation.appendParticles(out, medium.medium); });
 }
 
 void MediaPlugin::build(nimbus::ecs::App& app) {
@@ -86,6 +98,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     app.addPlugin<render::RenderPlugin>();  // draws nothing until a host enables rendering
     app.registerComponent<MediumComponent>("Medium");
     app.registerComponent<ParticleCloud>("ParticleCloud");
+    app.registerComponent<EmitterComponent>("Emitter");
     app.insertResource<MediaFrame>();
     app.insertResource<MediaRendererState>();
     if (!app.hasResource<Settings>()) app.insertResource<Settings>();
@@ -95,6 +108,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("slice_resolution", "texels per side of a light slice (default 256)");
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
     app.resource<scene::SceneSpawners>().add("media", spawnMedia);
+    app.addSystem({.name = kEmitSystem, .phase = nimbus::ecs::phases::kSimulate, .after = {scene::kAnimateSystem}}, emitSystem);
     app.addSystem({.name = kLightSliceSystem, .phase = nimbus::ecs::phases::kPrepare}, gatherSystem);
     app.addSystem({.name = kRenderSystem, .phase = nimbus::ecs::phases::kRender, .before = {render::kRenderFrameSystem}},
                   renderSystem);

@@ -13,6 +13,7 @@
 
 #include "nimbus/ecs/app.h"
 #include "nimbus/ecs/plugin.h"
+#include "nimbus/media/emitter_simulation.h"
 #include "nimbus/media/media_renderer.h"
 #include "nimbus/media/media_scene.h"
 #include "nimbus/media/particle_set.h"
@@ -33,6 +34,13 @@ struct ParticleCloud {
     std::vector<glm::vec3> positions;
     std::vector<float> radii;
     std::vector<float> densities;
+};
+
+// An emitter riding on the entity's transform. `previousWorld` is the transform at the start of the
+// step, so particles born during a step spawn along the node's path, not in clumps.
+struct EmitterComponent {
+    EmitterSimulation simulation;
+    glm::dmat4 previousWorld{1.0};
 };
 
 // Resource: the medium as it will be drawn this frame (world space), and how.
