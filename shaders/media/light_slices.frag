@@ -41,15 +41,20 @@ void main() {
     float k = KERNEL_FALLOFF / (radius * radius);
     float sk = sqrt(k);
     float scale = particle.albedoSigma.w * exp(-k * chord.b2) * (HALF_SQRT_PI / sk);
-    float entry = erfApprox(-sk * chord.halfChord);
+    // A perspective view's rays start at the light: a light inside the sphere sees only the part ahead.
+    float start = uParams.x > 0.5 ? max(-chord.halfChord, -chord.tClosest) : -chord.halfChord;
+    float entry = erfApprox(sk * start);
 
     int slices = int(uParams.w);
     float spacing = (uParams.z - uParams.y) / uParams.w;
     vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    // Planes before the chord get nothing, planes after it the whole particle: only the few planes
+    // that cut the chord need an erf.
+    float total = scale * (erfApprox(sk * chord.halfChord) - entry);
     for (int s = 0; s < slices; ++s) {
-        float t = (uParams.y + float(s + 1) * spacing) / cosAxis;
-        float u = clamp(t - chord.tClosest, -chord.halfChord, chord.halfChord);
-        values[s / 4][s - 4 * (s / 4)] = scale * (erfApprox(sk * u) - entry);
+        float u = (uParams.y + float(s + 1) * spacing) / cosAxis - chord.tClosest;
+        float value = u <= start ? 0.0 : u >= chord.halfChord ? total : scale * (erfApprox(sk * u) - entry);
+        values[s / 4][s - 4 * (s / 4)] = value;
     }
     for (int a = 0; a < 8; ++a) outSlices[a] = values[a];
 }

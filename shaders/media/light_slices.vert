@@ -22,7 +22,11 @@ void main() {
         return;
     }
     float d = length(c);
-    if (d <= pr.w * 1.001 || -c.z - pr.w <= uParams.y) {
+    if (-c.z + pr.w <= 0.0) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // wholly behind the light (another cube face sees it)
+        return;
+    }
+    if (d <= pr.w * 1.001 || -c.z - pr.w <= 0.0) {
         gl_Position = vec4(corner, 0.5, 1.0);  // the light is inside or just at the sphere: cover everything
         return;
     }

@@ -41,7 +41,7 @@ void main() {
     float tau = particle.albedoSigma.w * chordIntegral(chord, radius, u0, u1);
     float alpha = oneMinusExpNeg(tau);
     if (alpha <= 0.0) discard;
-    vec3 p = origin + dir * (chord.tClosest + chordCentroid(chord, radius, u0, u1));
-    vec3 source = mediumSource(p, dir, particle);
+    float lo = max(u0, -chord.halfChord), hi = min(u1, chord.halfChord);
+    vec3 source = segmentSource(origin, dir, chord, radius, lo, hi, chordShadingPoint(chord, radius, u0, u1, tau), particle);
     outColor = vec4(source * alpha, alpha);
 }

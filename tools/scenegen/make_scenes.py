@@ -65,7 +65,97 @@ def cloud():
     return b
 
 
-SCENES = {"demo": demo, "cloud": cloud}
+def smoke():
+    """Issue 4: a smoke column beside a building that shadows part of it; the smoke shadows the ground."""
+    b = Builder()
+    b.environment(background=[0.42, 0.52, 0.7], ambient=[0.14, 0.16, 0.2])
+    ground = b.material("ground", (0.5, 0.48, 0.44))
+    concrete = b.material("concrete", (0.62, 0.6, 0.57))
+    b.node("ground", mesh=b.plane_mesh("ground", 30, 30, ground))
+    b.node("building", translation=(-2.6, 2.25, -0.5), mesh=b.box_mesh("building", (2.5, 4.5, 4.0), concrete))
+    b.node("chimney", translation=(0, 0.05, 0),
+           ext={"medium": {"extinction": 6.0, "albedo": [0.7, 0.7, 0.7], "g": 0.3},
+                "emitter": {"preset": "smoke", "seed": 7, "rate": 30, "max_particles": 600,
+                            "shape": {"type": "disc", "radius": 0.4},
+                            "velocity": [0.0, 0.9, 0.0], "wind": [0.35, 0.0, 0.0]}})
+    # Low sun from the building's side: its shadow crosses the lower half of the column.
+    b.sun("sun", direction=(0.8, -0.42, 0.3), intensity=3.0)
+    b.camera("main", eye=(4.0, 4.2, 14.0), target=(0.6, 3.4, 0), yfov=0.72)
+    return b
+
+
+def campfire():
+    """Issue 4: a campfire (emissive rising fire) with smoke above, at dusk."""
+    b = Builder()
+    b.environment(background=[0.08, 0.1, 0.18], ambient=[0.04, 0.045, 0.07])
+    ground = b.material("ground", (0.35, 0.3, 0.25))
+    wood = b.material("wood", (0.3, 0.18, 0.1))
+    stone = b.material("stone", (0.45, 0.45, 0.45))
+    b.node("ground", mesh=b.plane_mesh("ground", 15, 15, ground))
+    log = b.box_mesh("log", (1.4, 0.18, 0.18), wood)
+    for i, angle in enumerate((0.0, 1.05, 2.1)):
+        import math
+        b.node("log%d" % i, translation=(0, 0.1, 0), rotation=(0, math.sin(angle / 2), 0, math.cos(angle / 2)), mesh=log)
+    rock = b.box_mesh("rock", (0.35, 0.25, 0.3), stone)
+    for i in range(8):
+        import math
+        a = i * math.pi / 4
+        b.node("rock%d" % i, translation=(0.95 * math.cos(a), 0.12, 0.95 * math.sin(a)), mesh=rock)
+    b.node("fire", translation=(0, 0.15, 0),
+           ext={"medium": {"extinction": 8.0, "albedo": [0.2, 0.2, 0.2], "g": 0.0},
+                "emitter": {"preset": "fire", "seed": 3, "shape": {"type": "disc", "radius": 0.35}}})
+    b.node("smoke", translation=(0, 1.2, 0),
+           ext={"medium": {"extinction": 3.0, "albedo": [0.55, 0.55, 0.55], "g": 0.2},
+                "emitter": {"preset": "smoke", "seed": 4, "rate": 10, "shape": {"type": "disc", "radius": 0.2}}})
+    b.sun("moon", direction=(-0.3, -0.6, -0.74), intensity=0.3, color=(0.7, 0.8, 1.0))
+    b.point("fire_light", position=(0, 0.7, 0), intensity=6.0, range_=12.0, color=(1.0, 0.55, 0.2))
+    b.camera("main", eye=(3.2, 2.2, 5.0), target=(0, 1.0, 0), yfov=0.75)
+    return b
+
+
+def jet():
+    """Issue 4: a jet crossing the sky (glTF animation) leaving a vapour trail from its tail."""
+    b = Builder()
+    b.environment(background=[0.3, 0.45, 0.75], ambient=[0.2, 0.24, 0.32])
+    hull = b.material("hull", (0.75, 0.76, 0.78))
+    jet = b.node("jet", translation=(-40, 30, -20))
+    b.doc["nodes"][jet]["children"] = []
+    fuselage = b.node("fuselage", mesh=b.box_mesh("fuselage", (6.0, 0.9, 0.9), hull), root=False)
+    wings = b.node("wings", translation=(0.3, 0, 0), mesh=b.box_mesh("wings", (1.6, 0.12, 7.0), hull), root=False)
+    tail = b.node("trail", translation=(-3.2, 0, 0), root=False,
+                  ext={"medium": {"extinction": 1.5, "albedo": [0.92, 0.92, 0.92], "g": 0.6},
+                       "emitter": {"preset": "vapor_trail", "seed": 11, "rate": 120, "max_particles": 2000}})
+    b.doc["nodes"][jet]["children"] = [fuselage, wings, tail]
+    # 80 m in 8 s along +X (10 m/s; slow so the trail stays in frame at test times).
+    b.animate_translation(jet, [0.0, 8.0], [(-40, 30, -20), (40, 30, -20)], name="flight")
+    # The sun ahead of the camera, low: the trail scatters it forwards (g = 0.6) and glows.
+    b.sun("sun", direction=(0.15, -0.45, 0.88), intensity=3.0)
+    b.camera("main", eye=(0, 27, 12), target=(-2, 30, -20), yfov=0.9)
+    return b
+
+
+def explosion():
+    """Issue 4: an explosion: a burst fireball that cools into rising smoke, among a few crates."""
+    b = Builder()
+    b.environment(background=[0.5, 0.56, 0.66], ambient=[0.16, 0.17, 0.2])
+    ground = b.material("ground", (0.42, 0.4, 0.36))
+    crate = b.material("crate", (0.55, 0.42, 0.25))
+    b.node("ground", mesh=b.plane_mesh("ground", 30, 30, ground))
+    box = b.box_mesh("crate", (1.2, 1.2, 1.2), crate)
+    for i, (x, z) in enumerate(((-4.0, -1.0), (3.5, -2.0), (-2.0, 3.5))):
+        b.node("crate%d" % i, translation=(x, 0.6, z), mesh=box)
+    b.node("explosion", translation=(0, 0.5, 0),
+           ext={"medium": {"extinction": 5.0, "albedo": [0.4, 0.4, 0.4], "g": 0.1},
+                "emitter": {"preset": "explosion", "seed": 21}})
+    b.sun("sun", direction=(0.5, -0.75, -0.43), intensity=3.0)
+    b.camera("main", eye=(6.0, 4.0, 11.0), target=(0, 2.0, 0), yfov=0.8)
+    return b
+
+
+SCENES = {"demo": demo, "cloud": cloud, "smoke": smoke, "campfire": campfire, "jet": jet, "explosion": explosion}
+
+# Times at which the scenes are rendered for tests and the demo (emitters need time to fill).
+TIMES = {"smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8}
 
 if __name__ == "__main__":
     wanted = sys.argv[1:] or list(SCENES)
