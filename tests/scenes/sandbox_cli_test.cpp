@@ -1,0 +1,239 @@
+// `sandbox render` run as a user runs it (DESIGN.md §5): malformed scenes are refused with a
+// non-zero exit and one line naming the file, third-party models render, a scene carrying our
+// extension still draws its meshes, bad arguments are refused, and --stats reports the frame.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "nimbus/assets/image_io.h"
+#include "nimbus/assets/scene.h"
+#include "process.h"
+
+namespace nimbus::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kData = NIMBUS_TEST_DATA_DIR;
+const fs::path kContent = NIMBUS_CONTENT_DIR_FOR_TESTS;
+
+ProcessResult sandbox(const std::vector<std::string>& args) { return runProcess(sandboxExecutable(), args); }
+
+// Exit code, signal and stderr in one message for assertion failures.
+std::string explain(const ProcessResult& r) { return r.describe() + "\nstdout:\n" + r.out + "\nstderr:\n" + r.err; }
+
+void expectRefused(const ProcessResult& r) {
+    EXPECT_FALSE(r.signaled) << "crashed instead of refusing: " << explain(r);
+    EXPECT_NE(r.exitCode, 0) << explain(r);
+    EXPECT_FALSE(r.err.empty()) << "no reason given: " << explain(r);
+}
+
+int countPixels(const assets::RgbImage& image, const std::function<bool(const glm::vec3&)>& predicate) {
+    int n = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) n += predicate(image.at(x, y)) ? 1 : 0;
+    return n;
+}
+
+// ---- malformed input ----
+
+std::vector<fs::path> boundsCheckingFiles() {
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(kData / "tinygltf/BoundsChecking"))
+        if (entry.path().extension() == ".gltf" || entry.path().extension() == ".glb") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+TEST(SandboxRender, RefusesEveryBoundsCheckingFileWithOneLineNamingIt) {
+    const std::vector<fs::path> files = boundsCheckingFiles();
+    ASSERT_GE(files.size(), 4u);
+    TempFolder out;
+    for (const fs::path& file : files) {
+        SCOPED_TRACE(file.filename().string());
+        const fs::path image = out / (file.stem().string() + ".png");
+        for (const char* command : {"render", "validate"}) {
+            std::vector<std::string> args = {command, file.string()};
+            if (std::string(command) == "render") args.insert(args.end(), {"--size", "32x24", "--out", image.string()});
+            const ProcessResult r = sandbox(args);
+            expectRefused(r);
+            const std::vector<std::string> lines = r.errLines();
+            ASSERT_EQ(lines.size(), 1u) << command << ": one line on stderr: " << explain(r);
+            EXPECT_NE(lines[0].find(file.filename().string()), std::string::npos) << command << ": names the file: " << lines[0];
+        }
+        EXPECT_FALSE(fs::exists(image)) << "no image for a refused scene";
+    }
+}
+
+TEST(SandboxRender, RefusesAMissingSceneFile) {
+    const ProcessResult r = sandbox({"render", (kData / "no_such_scene.gltf").string(), "--size", "32x24"});
+    expectRefused(r);
+    ASSERT_EQ(r.errLines().size(), 1u) << explain(r);
+    EXPECT_NE(r.err.find("no_such_scene.gltf"), std::string::npos) << r.err;
+}
+
+// ---- models that must render ----
+
+struct Rendered {
+    ProcessResult process;
+    assets::RgbImage image;
+};
+
+Rendered renderToFile(const fs::path& scene, const fs::path& out, const std::string& size, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = {"render", scene.string(), "--size", size, "--out", out.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    Rendered r{sandbox(args), {}};
+    EXPECT_FALSE(r.process.signaled) << explain(r.process);
+    EXPECT_EQ(r.process.exitCode, 0) << explain(r.process);
+    // (Drivers may log to stderr, so only our own messages are ruled out.)
+    EXPECT_EQ(r.process.err.find("sandbox"), std::string::npos) << "a successful render reports no problem: " << r.process.err;
+    EXPECT_TRUE(fs::exists(out)) << out;
+    if (fs::exists(out)) r.image = assets::readImage(out);
+    return r;
+}
+
+TEST(SandboxRender, KhronosBoxShowsTheRedBox) {
+    // The acceptance command: sandbox render Box.gltf --size 320x240 --out box.png
+    TempFolder out;
+    const Rendered r = renderToFile(kData / "khronos/Box/Box.gltf", out / "box.png", "320x240");
+    ASSERT_EQ(r.image.width, 320);
+    ASSERT_EQ(r.image.height, 240);
+    const int lit = countPixels(r.image, [](const glm::vec3& p) { return glm::length(p) > 0.0f; });
+    const int red = countPixels(r.image, [](const glm::vec3& p) { return p.x > 0.05f && p.x > 4.0f * p.y && p.x > 4.0f * p.z; });
+    EXPECT_GT(lit, 320 * 240 / 5) << "the box fills a good part of the frame";
+    EXPECT_EQ(red, lit) << "every pixel that is not background is red";
+    EXPECT_NE(r.process.out.find("320x240"), std::string::npos) << r.process.out;
+}
+
+TEST(SandboxRender, TinygltfCubeRendersItsTexture) {
+    TempFolder out;
+    const Rendered r = renderToFile(kData / "tinygltf/Cube/Cube.gltf", out / "cube.exr", "160x120");
+    const int covered = countPixels(r.image, [](const glm::vec3& p) { return glm::length(p) > 0.0f; });
+    EXPECT_GT(covered, 160 * 120 / 10);
+    // A textured cube is not one flat colour: count distinct quantised colours among covered pixels.
+    std::vector<int> keys;
+    for (int y = 0; y < r.image.height; ++y)
+        for (int x = 0; x < r.image.width; ++x) {
+            const glm::vec3 p = r.image.at(x, y);
+            if (glm::length(p) > 0.0f) keys.push_back(static_cast<int>(p.x * 64) * 4096 + static_cast<int>(p.y * 64) * 64 + static_cast<int>(p.z * 64));
+        }
+    std::sort(keys.begin(), keys.end());
+    EXPECT_GT(std::unique(keys.begin(), keys.end()) - keys.begin(), 20);
+}
+
+TEST(SandboxRender, TinygltfBox01GlbRenders) {
+    TempFolder out;
+    const Rendered r = renderToFile(kData / "tinygltf/box01.glb", out / "box01.png", "160x120");
+    EXPECT_GT(countPixels(r.image, [](const glm::vec3& p) { return glm::length(p) > 0.0f; }), 160 * 120 / 10);
+}
+
+TEST(SandboxRender, SceneWithTheMediaExtensionStillRendersItsMeshes) {
+    TempFolder out;
+    const fs::path scene = kContent / "scenes/cloud.gltf";
+    const Rendered withMedium = renderToFile(scene, out / "cloud.exr", "160x90");
+    ASSERT_EQ(withMedium.image.height, 90);
+    // The meshes are drawn: the bottom rows see the ground, never the background radiance.
+    const assets::Scene loaded = assets::loadScene(scene);
+    const glm::vec3 background = loaded.environment.background;
+    ASSERT_GT(glm::length(background), 0.1f) << "cloud.gltf has a sky colour; the check below relies on it";
+    int ground = 0;
+    for (int y = withMedium.image.height - 10; y < withMedium.image.height; ++y)
+        for (int x = 0; x < withMedium.image.width; ++x) ground += glm::length(withMedium.image.at(x, y) - background) > 0.05f ? 1 : 0;
+    EXPECT_EQ(ground, 10 * withMedium.image.width);
+
+    // The medium is drawn too: the same file without the node extensions renders differently.
+    std::ifstream in(scene);
+    nlohmann::json gltf = nlohmann::json::parse(in);
+    int stripped = 0;
+    for (auto& node : gltf.at("nodes"))
+        if (node.contains("extensions") && node.at("extensions").contains("NIMBUS_participating_media")) {
+            node.at("extensions").erase("NIMBUS_participating_media");
+            ++stripped;
+        }
+    ASSERT_GT(stripped, 0) << "cloud.gltf carries a medium";
+    for (const auto& buffer : gltf.at("buffers"))
+        fs::copy_file(scene.parent_path() / buffer.at("uri").get<std::string>(), out / buffer.at("uri").get<std::string>());
+    std::ofstream(out / "no_medium.gltf") << gltf.dump();
+    const Rendered withoutMedium = renderToFile(out / "no_medium.gltf", out / "no_medium.exr", "160x90");
+    ASSERT_EQ(withoutMedium.image.width, withMedium.image.width);
+    int changed = 0;
+    for (int y = 0; y < withMedium.image.height; ++y)
+        for (int x = 0; x < withMedium.image.width; ++x)
+            changed += glm::length(withMedium.image.at(x, y) - withoutMedium.image.at(x, y)) > 0.02f ? 1 : 0;
+    EXPECT_GT(changed, 160 * 90 / 20) << "the cloud covers part of the frame";
+}
+
+// ---- bad arguments ----
+
+TEST(SandboxRender, RefusesBadArgumentsWithAReason) {
+    const std::string box = (kData / "khronos/Box/Box.gltf").string();
+    struct Case {
+        std::vector<std::string> args;
+        std::string mentions;  // what the reason must name
+        bool ourMessage;       // our InputError (exactly one line) or CLI11's parse error (reason + --help hint)
+    };
+    const Case cases[] = {
+        {{"render"}, "scene", false},
+        {{"render", box, "--size", "0x10"}, "--size", true},
+        {{"render", box, "--size", "abc"}, "--size", true},
+        {{"render", box, "--size", "64x"}, "--size", true},
+        {{"render", box, "--bogus"}, "--bogus", false},
+        {{"render", box, "--set", "no_such_setting=1"}, "no_such_setting", true},
+        {{"render", box, "--set", "shadow_map_size"}, "shadow_map_size", true},
+        {{"render", box, "--stats", "/dev/null", "--frames", "5"}, "--frames", true},
+        {{}, "subcommand", false},
+    };
+    for (const Case& c : cases) {
+        std::string joined;
+        for (const auto& a : c.args) joined += " " + a;
+        SCOPED_TRACE("sandbox" + joined);
+        const ProcessResult r = sandbox(c.args);
+        expectRefused(r);
+        EXPECT_NE(r.err.find(c.mentions), std::string::npos) << explain(r);
+        if (c.ourMessage) {
+            EXPECT_EQ(r.errLines().size(), 1u) << explain(r);
+        } else {
+            EXPECT_NE(r.err.find("--help"), std::string::npos) << "points to the usage: " << explain(r);
+        }
+        EXPECT_TRUE(r.out.empty()) << "nothing on stdout: " << r.out;
+    }
+}
+
+TEST(SandboxRender, HelpPrintsTheUsage) {
+    const ProcessResult r = sandbox({"render", "--help"});
+    EXPECT_FALSE(r.signaled);
+    EXPECT_EQ(r.exitCode, 0) << explain(r);
+    for (const char* option : {"--out", "--size", "--stats", "--set", "--time"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from:\n" << r.out;
+}
+
+// ---- --stats ----
+
+TEST(SandboxRender, StatsReportTheFrame) {
+    TempFolder out;
+    const fs::path json = out / "stats.json";
+    const Rendered r = renderToFile(kContent / "scenes/demo.gltf", out / "demo.png", "96x64", {"--stats", json.string()});
+    ASSERT_TRUE(fs::exists(json));
+    std::ifstream in(json);
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    EXPECT_EQ(stats.at("width").get<int>(), 96);
+    EXPECT_EQ(stats.at("height").get<int>(), 64);
+    EXPECT_GT(stats.at("frame_ms").get<double>(), 0.0);
+    EXPECT_GE(stats.at("frames").get<int>(), 20);
+    EXPECT_FALSE(stats.at("gl_renderer").get<std::string>().empty());
+    EXPECT_EQ(stats.at("gl_errors").get<int>(), 0);
+    EXPECT_EQ(stats.at("camera").get<std::string>(), "main");
+    const nlohmann::json& passes = stats.at("passes_ms");
+    ASSERT_TRUE(passes.is_object()) << stats.dump();
+    for (const char* pass : {"shadow_maps", "opaque", "compose"}) {
+        ASSERT_TRUE(passes.contains(pass)) << pass << " in " << passes.dump();
+        EXPECT_GT(passes.at(pass).get<double>(), 0.0) << pass;
+    }
+}
+
+}  // namespace
+}  // namespace nimbus::test

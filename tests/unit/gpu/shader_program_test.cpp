@@ -1,0 +1,190 @@
+// Shader loading (gpu/shader_program.h): #include once per stage, cycles refused, defines injected
+// after #version without shifting line numbers, and driver logs mapped back to file:line.
+#include "nimbus/gpu/shader_program.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "gl_test_context.h"
+#include "nimbus/base/error.h"
+#include "nimbus/base/paths.h"
+
+namespace nimbus::gpu {
+namespace {
+
+using test::GlTest;
+using test::ScratchFolder;
+
+std::size_t occurrences(const std::string& text, const std::string& needle) {
+    std::size_t count = 0;
+    for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++count;
+    return count;
+}
+
+std::string messageOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const SystemError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no SystemError thrown";
+    return {};
+}
+
+TEST(PreprocessShader, InsertsDefinesAfterVersionAndKeepsLineNumbers) {
+    ScratchFolder dir;
+    dir.write("main.frag", "#version 450 core\n// comment\nvoid main() {}\n");
+    const PreprocessedSource s = preprocessShader(dir.path(), "main.frag", {"FOO", "BAR 2"});
+    EXPECT_EQ(s.text, "#version 450 core\n#define FOO\n#define BAR 2\n#line 2 0\n// comment\nvoid main() {}\n");
+    EXPECT_EQ(s.files, std::vector<std::string>{"main.frag"});
+}
+
+TEST(PreprocessShader, IncludesEachFileOncePerStage) {
+    ScratchFolder dir;
+    dir.write("main.frag", "#version 450 core\n#include \"a.glsl\"\n#include \"b.glsl\"\nvoid main() {}\n");
+    dir.write("a.glsl", "float fromA;\n");
+    dir.write("b.glsl", "  #  include \"a.glsl\"\nfloat fromB;\n");
+    const PreprocessedSource s = preprocessShader(dir.path(), "main.frag", {});
+    EXPECT_EQ(occurrences(s.text, "float fromA;"), 1u);
+    EXPECT_EQ(occurrences(s.text, "float fromB;"), 1u);
+    EXPECT_EQ(occurrences(s.text, "#include"), 0u);
+    EXPECT_EQ(s.files, (std::vector<std::string>{"main.frag", "a.glsl", "b.glsl"}));
+    // Each included file starts at its own line 1 and the includer resumes at the line after the #include.
+    EXPECT_NE(s.text.find("#line 1 1\nfloat fromA;\n#line 3 0\n"), std::string::npos) << s.text;
+    EXPECT_NE(s.text.find("#line 1 2\n#line 2 2\nfloat fromB;\n#line 4 0\nvoid main() {}"), std::string::npos) << s.text;
+}
+
+TEST(PreprocessShader, IncludePathsAreRelativeToTheShaderFolder) {
+    ScratchFolder dir;
+    dir.write("media/particles.frag", "#version 450 core\n#include \"common/math.glsl\"\nvoid main() {}\n");
+    dir.write("common/math.glsl", "const float PI = 3.14159265;\n");
+    const PreprocessedSource s = preprocessShader(dir.path(), "media/particles.frag", {});
+    EXPECT_EQ(s.files, (std::vector<std::string>{"media/particles.frag", "common/math.glsl"}));
+    EXPECT_NE(s.text.find("const float PI"), std::string::npos);
+}
+
+TEST(PreprocessShader, RefusesIncludeCycles) {
+    ScratchFolder dir;
+    dir.write("main.frag", "#version 450 core\n#include \"a.glsl\"\n");
+    dir.write("a.glsl", "#include \"b.glsl\"\n");
+    dir.write("b.glsl", "#include \"a.glsl\"\n");
+    const std::string message = messageOf([&] { preprocessShader(dir.path(), "main.frag", {}); });
+    EXPECT_NE(message.find("cycle"), std::string::npos) << message;
+    EXPECT_NE(message.find("a.glsl"), std::string::npos) << message;
+}
+
+TEST(PreprocessShader, RefusesAFileIncludingItself) {
+    ScratchFolder dir;
+    dir.write("main.frag", "#version 450 core\n#include \"main.frag\"\n");
+    EXPECT_THROW(preprocessShader(dir.path(), "main.frag", {}), SystemError);
+}
+
+TEST(PreprocessShader, RefusesMissingFilesAndMissingVersion) {
+    ScratchFolder dir;
+    dir.write("main.frag", "#version 450 core\n#include \"nowhere.glsl\"\n");
+    dir.write("plain.frag", "void main() {}\n");
+    std::string message = messageOf([&] { preprocessShader(dir.path(), "main.frag", {}); });
+    EXPECT_NE(message.find("nowhere.glsl"), std::string::npos) << message;
+    message = messageOf([&] { preprocessShader(dir.path(), "plain.frag", {}); });
+    EXPECT_NE(message.find("#version"), std::string::npos) << message;
+    message = messageOf([&] { preprocessShader(dir.path(), "absent.vert", {}); });
+    EXPECT_NE(message.find("absent.vert"), std::string::npos) << message;
+}
+
+TEST(PreprocessShader, EveryEngineShaderResolves) {
+    const std::filesystem::path folder = shaderDirectory();
+    int stages = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+        const std::string ext = entry.path().extension().string();
+        if (ext != ".vert" && ext != ".frag" && ext != ".geom" && ext != ".comp") continue;
+        const std::string file = std::filesystem::relative(entry.path(), folder).generic_string();
+        EXPECT_NO_THROW(preprocessShader(folder, file, {})) << file;
+        ++stages;
+    }
+    EXPECT_GE(stages, 6);  // opaque, shadow_depth, compose + fullscreen at least
+}
+
+TEST(MapShaderLog, RewritesMesaSourceNumbersToFileNames) {
+    const std::vector<std::string> files = {"opaque.frag", "common/lights.glsl"};
+    EXPECT_EQ(mapShaderLog("0:12(5): error: `foo' undeclared\n1:3(10): error: syntax error\n", files),
+              "opaque.frag:12(5): error: `foo' undeclared\ncommon/lights.glsl:3(10): error: syntax error\n");
+}
+
+TEST(MapShaderLog, RewritesNvidiaStyleAndKeepsOtherLines) {
+    const std::vector<std::string> files = {"opaque.frag"};
+    EXPECT_EQ(mapShaderLog("0(7) : error C1008: undefined variable \"x\"\n\nlink status: failed\n", files),
+              "opaque.frag:7 : error C1008: undefined variable \"x\"\nlink status: failed\n");
+}
+
+TEST(MapShaderLog, NamesUnknownSourceNumbers) {
+    EXPECT_EQ(mapShaderLog("4:2(1): error: x\n", {"only.frag"}), "source 4:2(1): error: x\n");
+}
+
+// ---- with a real context ----
+
+class CompileProgram : public GlTest {};
+
+constexpr const char* kVertex = "#version 450 core\nvoid main() { gl_Position = vec4(0.0, 0.0, 0.0, 1.0); }\n";
+
+TEST_F(CompileProgram, BuildsAValidProgram) {
+    ScratchFolder dir;
+    dir.write("ok.vert", kVertex);
+    dir.write("ok.frag", "#version 450 core\n#include \"lib.glsl\"\nout vec4 c;\nvoid main() { c = vec4(VALUE * helper()); }\n");
+    dir.write("lib.glsl", "float helper() { return 0.5; }\n");
+    const Program p = compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "ok.frag", .compute = "",
+                                      .defines = {"VALUE 2.0"}, .folder = dir.path()});
+    ASSERT_TRUE(p);
+    EXPECT_EQ(glIsProgram(p.id()), GL_TRUE);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(p.id(), GL_LINK_STATUS, &linked);
+    EXPECT_EQ(linked, GL_TRUE);
+    EXPECT_EQ(context().takeGlErrors().count, 0u);
+}
+
+TEST_F(CompileProgram, ReportsTheIncludedFileAndLineOfAnError) {
+    ScratchFolder dir;
+    dir.write("ok.vert", kVertex);
+    dir.write("main.frag", "#version 450 core\n#include \"lib.glsl\"\nout vec4 c;\nvoid main() { c = vec4(helper()); }\n");
+    dir.write("lib.glsl", "float helper() {\n    return 1.0;\n}\nfloat broken() { return undefined_thing; }\n");
+    const std::string message = messageOf([&] {
+        compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "main.frag", .compute = "", .defines = {},
+                        .folder = dir.path()});
+    });
+    EXPECT_NE(message.find("lib.glsl:4"), std::string::npos) << message;
+    EXPECT_NE(message.find("undefined_thing"), std::string::npos) << message;
+    EXPECT_NE(message.find("main.frag"), std::string::npos) << "the program is named: " << message;
+}
+
+TEST_F(CompileProgram, DefinesDoNotShiftTheReportedLine) {
+    ScratchFolder dir;
+    dir.write("ok.vert", kVertex);
+    dir.write("bad.frag", "#version 450 core\nout vec4 c;\nvoid main() {\n    c = vec4(1.0) +;\n}\n");
+    const std::string message = messageOf([&] {
+        compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "bad.frag", .compute = "",
+                        .defines = {"A 1", "B 2", "C"}, .folder = dir.path()});
+    });
+    EXPECT_NE(message.find("bad.frag:4"), std::string::npos) << message;
+    EXPECT_EQ(message.find("0:"), std::string::npos) << "raw source numbers left in: " << message;
+}
+
+TEST_F(CompileProgram, ReportsLinkErrors) {
+    ScratchFolder dir;
+    dir.write("ok.vert", kVertex);
+    dir.write("needs_input.frag", "#version 450 core\nin vec3 vMissing;\nout vec4 c;\nvoid main() { c = vec4(vMissing, 1.0); }\n");
+    const std::string message = messageOf([&] {
+        compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "needs_input.frag", .compute = "", .defines = {},
+                        .folder = dir.path()});
+    });
+    EXPECT_NE(message.find("link"), std::string::npos) << message;
+    EXPECT_NE(message.find("vMissing"), std::string::npos) << message;
+}
+
+TEST_F(CompileProgram, RefusesAProgramWithoutStages) {
+    ScratchFolder dir;
+    EXPECT_THROW(compileProgram({.vertex = "", .geometry = "", .fragment = "", .compute = "", .defines = {}, .folder = dir.path()}),
+                 SystemError);
+}
+
+}  // namespace
+}  // namespace nimbus::gpu
