@@ -48,11 +48,12 @@ int run(const RenderOptions& o) {
     parseSize(o.size, width, height);
     if (o.frames < 20) throwInputError("--frames", std::to_string(o.frames), "", "at least 20 frames are timed");
 
-    auto context = gpu::Context::create();
     std::vector<std::string> settings = o.settings;
     if (!o.mode.empty()) settings.push_back("mode=" + o.mode);
-    Session session({o.scene, o.time, settings});
-    ecs::App& app = session.app();
+    std::unique_ptr<gpu::Context> context;  // declared first: it must outlive the GL objects the session makes
+    auto session = std::make_unique<Session>(SessionOptions{o.scene, o.time, settings});  // bad input is refused before any GL work
+    context = gpu::Context::create();
+    ecs::App& app = session->app();
     auto& request = app.resource<render::RenderRequest>();
     request.enabled = true;
     request.settings.width = width;
@@ -93,7 +94,7 @@ int run(const RenderOptions& o) {
         stats["scene"] = o.scene;
         stats["width"] = width;
         stats["height"] = height;
-        stats["time"] = session.time();
+        stats["time"] = session->time();
         stats["camera"] = state.lastInput.camera.name;
         stats["gl_renderer"] = context->renderer();
         stats["gl_version"] = context->version();
@@ -105,6 +106,7 @@ int run(const RenderOptions& o) {
             stats["media_particles"] = media->renderer->stats().particles;
             stats["media_slices"] = media->renderer->stats().slices;
             stats["media_slice_views"] = media->renderer->stats().sliceViews;
+            if (frame.settings.mode == media::MediaMode::Blocks) stats["media_blocks"] = media->renderer->stats().blocks;
         }
         std::ofstream file(o.stats);
         if (!file) throwInputError(o.stats, "", "", "cannot write the stats file");
@@ -118,7 +120,7 @@ int run(const RenderOptions& o) {
     std::string outputs;
     for (const auto& file : o.out) outputs += (outputs.empty() ? " -> " : ", ") + file;
     std::printf("rendered %s at %dx%d (camera %s, t=%.3f s)%s\n", o.scene.c_str(), width, height,
-                state.lastInput.camera.name.c_str(), session.time(), outputs.c_str());
+                state.lastInput.camera.name.c_str(), session->time(), outputs.c_str());
     if (stats.contains("frame_ms"))
         std::printf("frame_ms %.3f (median of %d, %s)\n", stats["frame_ms"].get<double>(), o.frames, context->renderer().c_str());
     return 0;
@@ -132,7 +134,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--out", options->out, "output image: .exr (linear radiance) or .png (sRGB); repeatable");
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
-    cmd->add_option("--mode", options->mode, "media mode: particles (default)");
+    cmd->add_option("--mode", options->mode, "media mode: particles (default) or blocks");
     cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));
     cmd->add_option("--camera", options->camera, "camera (camera or node name); default: the scene's first");
     cmd->add_option("--set", options->settings, "KEY=VALUE setting (repeatable)");

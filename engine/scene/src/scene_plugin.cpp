@@ -1,5 +1,6 @@
 #include "nimbus/scene/scene_plugin.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "nimbus/ecs/frame_info.h"
@@ -34,11 +35,17 @@ void ScenePlugin::build(ecs::App& app) {
 
 void spawnScene(ecs::World& world, std::shared_ptr<const assets::Scene> scene, double time) {
     const std::vector<glm::dmat4> pose = assets::computeWorldTransforms(*scene, time);
-    std::vector<ecs::Entity> created;
+    const std::vector<bool> shown = assets::nodesInScene(*scene);
+    // What exists before, so a failing spawner can be undone completely (its own entities included).
+    std::vector<ecs::Entity> before;
+    world.forEachEntity([&](ecs::Entity e) { before.push_back(e); });
+    std::shared_ptr<const assets::Scene> previous;
+    if (const auto* asset = world.tryResource<SceneAsset>()) previous = asset->scene;
+
     for (std::size_t i = 0; i < scene->nodes.size(); ++i) {
+        if (!shown[i]) continue;  // nodes outside the default scene are not part of what is drawn
         const assets::Node& node = scene->nodes[i];
         const ecs::Entity e = world.create();
-        created.push_back(e);
         world.emplace<SceneNode>(e, SceneNode{static_cast<int>(i), node.name});
         world.emplace<Transform>(e, Transform{pose[i]});
         if (node.mesh >= 0) world.emplace<MeshRenderer>(e, MeshRenderer{node.mesh});
@@ -50,8 +57,13 @@ void spawnScene(ecs::World& world, std::shared_ptr<const assets::Scene> scene, d
         try {
             for (const auto& [name, spawn] : spawners->list) spawn(world, *scene);
         } catch (...) {
+            std::vector<ecs::Entity> created;
+            world.forEachEntity([&](ecs::Entity e) {
+                if (std::find(before.begin(), before.end(), e) == before.end()) created.push_back(e);
+            });
             for (const ecs::Entity e : created) world.destroy(e);
-            world.removeResource<SceneAsset>();
+            if (previous) world.insertResource<SceneAsset>(SceneAsset{previous});
+            else world.removeResource<SceneAsset>();
             throw;
         }
     }

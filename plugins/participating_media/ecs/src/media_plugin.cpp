@@ -44,6 +44,8 @@ MediaRenderSettings readSettings(const Settings* settings) {
     if (auto v = settings->integer("slices", kMinSlices, kMaxSlices)) s.slices = static_cast<int>(*v);
     if (auto v = settings->integer("slice_resolution", 16, 4096)) s.sliceResolution = static_cast<int>(*v);
     if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
+    if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
+    if (auto v = settings->number("impostor_scale", 0.05, 4.0)) s.impostorScale = static_cast<float>(*v);
     return s;
 }
 
@@ -103,10 +105,12 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     app.insertResource<MediaRendererState>();
     if (!app.hasResource<Settings>()) app.insertResource<Settings>();
     auto& settings = app.resource<Settings>();
-    settings.declare("mode", "media mode: particles (default)");
+    settings.declare("mode", "media mode: particles (default) or blocks");
     settings.declare("slices", "light slices per light view, 4..32 (default: chosen from the medium)");
     settings.declare("slice_resolution", "texels per side of a light slice (default 256)");
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
+    settings.declare("blocks", "blocks mode: number of particle blocks (default: round(sqrt(particles)))");
+    settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
     app.resource<scene::SceneSpawners>().add("media", spawnMedia);
     app.addSystem({.name = kEmitSystem, .phase = nimbus::ecs::phases::kSimulate, .after = {scene::kAnimateSystem}}, emitSystem);
     app.addSystem({.name = kLightSliceSystem, .phase = nimbus::ecs::phases::kPrepare}, gatherSystem);
