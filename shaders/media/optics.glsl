@@ -105,6 +105,21 @@ float chordShadingPoint(Chord c, float radius, float u0, float u1, float tau) {
     return clamp(erfInverse(a + fraction * (b - a)) / sk, lo, hi);
 }
 
+// Mean and variance (along the ray, as u from the closest point) of the kernel restricted to
+// [u0, u1]: a Gaussian of deviation s = R/3 truncated there.
+vec2 chordMoments(Chord c, float radius, float u0, float u1) {
+    float lo = max(u0, -c.halfChord), hi = min(u1, c.halfChord);
+    float s = radius / 3.0;
+    if (hi <= lo) return vec2(0.5 * (lo + hi), 0.0);
+    float a = lo / s, b = hi / s;
+    float pa = exp(-0.5 * a * a), pb = exp(-0.5 * b * b);  // φ up to 1/√(2π), which cancels
+    float z = 1.2533141373 * (erfApprox(b * 0.70710678) - erfApprox(a * 0.70710678));  // √(π/2)·(erf…)
+    if (z < 1e-7) return vec2(0.5 * (lo + hi), (hi - lo) * (hi - lo) / 12.0);
+    float m = (pa - pb) / z;
+    float v = 1.0 + (a * pa - b * pb) / z - m * m;
+    return vec2(s * m, s * s * max(v, 0.0));
+}
+
 float henyeyGreenstein(float cosTheta, float g) {
     float denom = max(1.0 + g * g - 2.0 * g * cosTheta, 1e-8);
     return (1.0 - g * g) / (4.0 * PI * denom * sqrt(denom));

@@ -53,15 +53,17 @@ def cloud():
     b = Builder()
     b.environment(background=[0.35, 0.48, 0.72], ambient=[0.15, 0.18, 0.24])
     ground = b.material("ground", (0.45, 0.5, 0.4))
-    metal = b.material("wing", (0.7, 0.7, 0.72), double_sided=True)
+    metal = b.material("wing", (0.8, 0.25, 0.15), double_sided=True)
     b.node("ground", mesh=b.plane_mesh("ground", 40, 40, ground))
-    positions, sizes, densities = blob_cloud(rng, 2000, (0, 4, 0), (4.0, 2.2, 3.0))
-    b.node("cloud", ext={"medium": {"extinction": 2.5, "albedo": [0.95, 0.95, 0.95], "g": 0.5},
+    # Large particles, as billboard clouds are usually built: a plane cutting one is clearly visible
+    # when particles are drawn as flat billboards (the seam blocks remove).
+    positions, sizes, densities = blob_cloud(rng, 500, (0, 4, 0), (3.6, 1.8, 2.6), particle_radius=(0.9, 1.5))
+    b.node("cloud", ext={"medium": {"extinction": 0.8, "albedo": [0.95, 0.95, 0.95], "g": 0.5},
                          "particles": b.particles(positions, sizes, densities)})
     b.node("wing", translation=(0.5, 4.1, 0), rotation=(0, 0, 0.0871557, 0.9961947),
-           mesh=b.box_mesh("wing", (9.0, 0.08, 1.6), metal))
-    b.sun("sun", direction=(0.4, -0.8, -0.45), intensity=3.0)
-    b.camera("main", eye=(0, 5.5, 14), target=(0, 3.8, 0), yfov=0.7)
+           mesh=b.box_mesh("wing", (9.0, 0.08, 2.2), metal))
+    b.sun("sun", direction=(0.35, -0.6, -0.72), intensity=3.0)
+    b.camera("main", eye=(0, 8.5, 12.5), target=(0, 3.8, 0), yfov=0.7)
     return b
 
 

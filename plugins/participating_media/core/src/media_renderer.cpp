@@ -1,7 +1,9 @@
 #include "nimbus/media/media_renderer.h"
 
 #include <algorithm>
+#include <numeric>
 
+#include "block_passes.h"
 #include "media_passes.h"
 #include "nimbus/base/error.h"
 #include "nimbus/media/slice_plan.h"
@@ -9,14 +11,29 @@
 
 namespace nimbus::media {
 
+// What blocks mode keeps for one frame: the partition and the impostor layouts, which the passes'
+// execute steps read after setup returns.
+struct BlockFrame {
+    BlockPartition partition;
+    std::vector<BlockViewPlan> lightPlans;  // one per slice view
+    BlockViewPlan cameraPlan;
+    std::vector<std::uint32_t> backToFront;
+};
+
+namespace {
+constexpr int kMaxAtlasSize = 4096;
+}
+
 MediaMode parseMediaMode(const std::string& text, const std::string& origin) {
     if (text == "particles") return MediaMode::Particles;
-    throwInputError(origin, text, "", "unknown media mode (known: particles)");
+    if (text == "blocks") return MediaMode::Blocks;
+    throwInputError(origin, text, "", "unknown media mode (known: particles, blocks)");
 }
 
 const char* mediaModeName(MediaMode mode) {
     switch (mode) {
         case MediaMode::Particles: return "particles";
+        case MediaMode::Blocks: return "blocks";
     }
     return "unknown";
 }
@@ -45,13 +62,22 @@ void MediaRenderer::prepare(const ParticleSet& particles, const MediaRenderSetti
 void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext& context) {
     if (particles_ == nullptr || particles_->empty()) return;
     if (!buffer_) buffer_ = std::make_unique<ParticleGpuBuffer>();
+    const bool blocks = settings_.mode == MediaMode::Blocks;
+    if (blocks) {
+        if (!blockFrame_) blockFrame_ = std::make_unique<BlockFrame>();
+        if (!blockBuffers_) blockBuffers_ = std::make_unique<BlockGpuBuffers>();
+        blockFrame_->partition = partitionIntoBlocks(*particles_, settings_.blocks);
+        blockFrame_->lightPlans.clear();
+        stats_.blocks = static_cast<int>(blockFrame_->partition.blocks.size());
+    }
 
     struct Upload {};
     graph.addPass<Upload>(
         "media_upload", [](render::PassBuilder& builder, Upload&) { builder.sideEffect(); },
-        [this, &context](const render::PassResources&, const Upload&) {
+        [this, &context, blocks](const render::PassResources&, const Upload&) {
             buffer_->upload(*particles_, context.view.origin);
-            buffer_->sortBackToFront(*particles_, context.view);
+            if (blocks) blockBuffers_->uploadItems(blockFrame_->partition);
+            else buffer_->sortBackToFront(*particles_, context.view);
         });
 
     const int resolution = settings_.sliceResolution > 0 ? settings_.sliceResolution : 256;
@@ -81,12 +107,48 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
     }
     stats_.sliceViews = static_cast<int>(views.size());
     if (views.empty()) return;
+    if (blocks) {
+        for (const SliceView& v : views) {
+            const ImpostorView view{v.view.view, v.view.viewProjection, v.view.perspective, v.lightOrigin, 0.0f,
+                                    glm::ivec2(resolution)};
+            blockFrame_->lightPlans.push_back(planBlockView(blockFrame_->partition, view, context.view.origin,
+                                                            impostorScale(), kMaxAtlasSize));
+        }
+        if (!impostorRenderer_) impostorRenderer_ = std::make_unique<BlockImpostorRenderer>();
+        if (!blockSlicePass_) blockSlicePass_ = std::make_unique<BlockSlicePass>();
+        context.transmittanceSlices = blockSlicePass_->add(graph, views, blockFrame_->lightPlans, resolution, *blockBuffers_,
+                                                           *buffer_, *impostorRenderer_);
+        return;
+    }
     if (!slicePass_) slicePass_ = std::make_unique<LightSlicePass>();
     context.transmittanceSlices = slicePass_->add(graph, views, resolution, *buffer_);
 }
 
+float MediaRenderer::impostorScale() const { return settings_.impostorScale > 0.0f ? settings_.impostorScale : 0.5f; }
+
 void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext& context) {
     if (particles_ == nullptr || particles_->empty()) return;
+    if (settings_.mode == MediaMode::Blocks) {
+        const render::View& v = context.view;
+        const ImpostorView view{v.view, v.viewProjection, !v.orthographic, glm::vec3(0.0f), v.znear, glm::ivec2(v.width, v.height)};
+        BlockFrame& frame = *blockFrame_;
+        frame.cameraPlan = planBlockView(frame.partition, view, v.origin, impostorScale(), kMaxAtlasSize);
+        stats_.impostorAtlas = frame.cameraPlan.atlasSize;
+        // Back to front by distance from the eye to the block centre (depth along the axis when orthographic).
+        std::vector<double> keys(frame.partition.blocks.size());
+        for (std::size_t b = 0; b < keys.size(); ++b) {
+            const glm::dvec3 d = frame.partition.blocks[b].centre - v.origin;
+            keys[b] = v.orthographic ? glm::dot(d, v.forward) : glm::length(d);
+        }
+        frame.backToFront.resize(keys.size());
+        std::iota(frame.backToFront.begin(), frame.backToFront.end(), 0u);
+        std::stable_sort(frame.backToFront.begin(), frame.backToFront.end(),
+                         [&](std::uint32_t a, std::uint32_t b) { return keys[a] > keys[b]; });
+        if (!impostorRenderer_) impostorRenderer_ = std::make_unique<BlockImpostorRenderer>();
+        if (!blockCompositePass_) blockCompositePass_ = std::make_unique<BlockCompositePass>();
+        blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, *blockBuffers_, *buffer_, *impostorRenderer_);
+        return;
+    }
     if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
     particlePass_->add(graph, context, *buffer_, settings_.softParticles);
 }

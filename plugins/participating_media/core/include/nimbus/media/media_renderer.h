@@ -13,9 +13,9 @@
 
 namespace nimbus::media {
 
-enum class MediaMode { Particles };
+enum class MediaMode { Particles, Blocks };
 
-// Parses "particles"; throws InputError naming the option for anything else.
+// Parses "particles" or "blocks"; throws InputError naming the option for anything else.
 MediaMode parseMediaMode(const std::string& text, const std::string& origin = "--mode");
 const char* mediaModeName(MediaMode mode);
 
@@ -25,17 +25,26 @@ struct MediaRenderSettings {
     int slices = 0;            // per light view; 0: chosen from the medium (see slice_plan.h), else 4..32
     int sliceResolution = 0;   // texels per side of a slice; 0: 256
     bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
+    int blocks = 0;            // blocks mode: block count; 0: automatic (block_partition.h)
+    float impostorScale = 0.0f;  // blocks mode: impostor texels per covered pixel; 0: 0.5
 };
 
 struct MediaFrameStats {
     std::size_t particles = 0;
     int slices = 0;            // per light view, this frame
     int sliceViews = 0;        // light views that got slices
+    int blocks = 0;            // blocks mode: blocks this frame
+    glm::ivec2 impostorAtlas{0};  // blocks mode: the camera's impostor atlas size
 };
 
 class LightSlicePass;
 class ParticlePass;
 class ParticleGpuBuffer;
+class BlockGpuBuffers;
+class BlockImpostorRenderer;
+class BlockCompositePass;
+class BlockSlicePass;
+struct BlockFrame;
 
 class MediaRenderer final : public render::RenderExtension {
 public:
@@ -54,6 +63,8 @@ public:
     const MediaFrameStats& stats() const { return stats_; }
 
 private:
+    float impostorScale() const;
+
     const ParticleSet* particles_ = nullptr;
     MediaRenderSettings settings_;
     assets::Aabb bounds_;
@@ -62,6 +73,11 @@ private:
     std::unique_ptr<ParticleGpuBuffer> buffer_;
     std::unique_ptr<LightSlicePass> slicePass_;
     std::unique_ptr<ParticlePass> particlePass_;
+    std::unique_ptr<BlockFrame> blockFrame_;  // blocks mode: this frame's partition and impostor plans
+    std::unique_ptr<BlockGpuBuffers> blockBuffers_;
+    std::unique_ptr<BlockImpostorRenderer> impostorRenderer_;
+    std::unique_ptr<BlockCompositePass> blockCompositePass_;
+    std::unique_ptr<BlockSlicePass> blockSlicePass_;
 };
 
 // World bounds of the particle spheres.

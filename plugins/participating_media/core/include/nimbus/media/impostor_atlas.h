@@ -1,0 +1,44 @@
+#pragma once
+// Where each block's depth impostor lives in an atlas texture, and which part of a view it covers.
+// The tile resolution follows the block's size in the view (seed 000: an impostor needs no more
+// texels than the pixels it covers), times a quality scale.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "nimbus/media/block_partition.h"
+#include "nimbus/render/light_views.h"
+
+namespace nimbus::media {
+
+struct AtlasTile {
+    int x = 0, y = 0, width = 0, height = 0;  // texels; width 0: the block is not visible
+};
+
+// Shelf-packs tiles of the requested sizes into an atlas no larger than maxSize per side, shrinking
+// every tile by the same factor until they fit. Deterministic (tallest first, ties by index).
+struct AtlasLayout {
+    int width = 0, height = 0;
+    std::vector<AtlasTile> tiles;  // in the order of the requested sizes
+    float shrink = 1.0f;           // how much the sizes were scaled down to fit
+};
+AtlasLayout packAtlas(const std::vector<glm::ivec2>& sizes, int maxSize);
+
+// A view to render impostors for: the camera or a light view (matrices origin-relative).
+struct ImpostorView {
+    glm::mat4 view{1.0f};
+    glm::mat4 viewProjection{1.0f};
+    bool perspective = true;
+    glm::vec3 eye{0.0f};          // origin-relative position of the eye (perspective)
+    float nearDepth = 0.0f;       // view depth of the near plane
+    glm::ivec2 viewport{1, 1};    // pixels (the camera) or texels (a light view's slices)
+};
+
+// Each block's rectangle in the view's NDC (xy min, zw max), clipped to [-1, 1]²; zero area when the
+// block is off-screen. A block that reaches behind the near plane covers the whole view.
+std::vector<glm::vec4> blockRectangles(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin);
+
+// Tile sizes for those rectangles: rectangle pixels × scale, clamped to [4, 256] per side.
+std::vector<glm::ivec2> tileSizes(const std::vector<glm::vec4>& rectangles, const glm::ivec2& viewport, float scale);
+
+}  // namespace nimbus::media

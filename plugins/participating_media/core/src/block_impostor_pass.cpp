@@ -1,0 +1,126 @@
+// Depth impostors of blocks (seed 000 §2.1): every particle drawn once into its block's atlas tile,
+// blending MIN for the front/back depths and ADD for optical depth in the same pass.
+#include <algorithm>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "block_passes.h"
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::media {
+namespace {
+
+void ensure(gpu::Buffer& buffer, std::size_t& capacity, std::size_t bytes) {
+    if (buffer && capacity >= bytes) return;
+    capacity = std::max(bytes, capacity * 3 / 2);
+    buffer = gpu::createBuffer(capacity, nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+}  // namespace
+
+BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin, float scale,
+                            int maxAtlasSize) {
+    BlockViewPlan plan;
+    plan.view = view;
+    const std::vector<glm::vec4> rects = blockRectangles(partition, view, origin);
+    const AtlasLayout layout = packAtlas(tileSizes(rects, view.viewport, scale), maxAtlasSize);
+    plan.atlasSize = glm::ivec2(layout.width, layout.height);
+    plan.tiles.resize(partition.blocks.size());
+    for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
+        const AtlasTile& t = layout.tiles[b];
+        plan.tiles[b].rect = rects[b];
+        plan.tiles[b].atlas = glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y), static_cast<float>(t.width),
+                                        static_cast<float>(t.height));
+        plan.tiles[b].centreRadius = glm::vec4(glm::vec3(partition.blocks[b].centre - origin), partition.blocks[b].meanParticleRadius);
+    }
+    return plan;
+}
+
+void BlockGpuBuffers::uploadItems(const BlockPartition& partition) {
+    std::vector<glm::uvec2> items(partition.order.size());
+    for (std::size_t b = 0; b < partition.blocks.size(); ++b)
+        for (std::uint32_t k = 0; k < partition.blocks[b].count; ++k) {
+            const std::uint32_t slot = partition.blocks[b].first + k;
+            items[slot] = glm::uvec2(partition.order[slot], static_cast<std::uint32_t>(b));
+        }
+    items_ = items.size();
+    ensure(itemBuffer_, itemCapacity_, std::max<std::size_t>(items.size(), 1) * sizeof(glm::uvec2));
+    if (!items.empty()) glNamedBufferSubData(itemBuffer_.id(), 0, static_cast<GLsizeiptr>(items.size() * sizeof(glm::uvec2)), items.data());
+}
+
+void BlockGpuBuffers::uploadTiles(const std::vector<GpuBlockTile>& tiles) {
+    ensure(tileBuffer_, tileCapacity_, std::max<std::size_t>(tiles.size(), 1) * sizeof(GpuBlockTile));
+    if (!tiles.empty()) glNamedBufferSubData(tileBuffer_.id(), 0, static_cast<GLsizeiptr>(tiles.size() * sizeof(GpuBlockTile)), tiles.data());
+}
+
+void BlockGpuBuffers::uploadDrawOrder(const std::vector<std::uint32_t>& blocks) {
+    ensure(orderBuffer_, orderCapacity_, std::max<std::size_t>(blocks.size(), 1) * sizeof(std::uint32_t));
+    if (!blocks.empty())
+        glNamedBufferSubData(orderBuffer_.id(), 0, static_cast<GLsizeiptr>(blocks.size() * sizeof(std::uint32_t)), blocks.data());
+}
+
+void BlockGpuBuffers::bind() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kImpostorItemsBinding, itemBuffer_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBlockTilesBinding, tileBuffer_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDrawOrderBinding, orderBuffer_.id());
+}
+
+BlockImpostorRenderer::BlockImpostorRenderer() {
+    program_ = gpu::compileProgram({.vertex = "media/block_impostors.vert", .fragment = "media/block_impostors.frag"});
+}
+
+void BlockImpostorRenderer::render(const BlockViewPlan& plan, const ImpostorTargets& targets, const BlockGpuBuffers& blocks,
+                                   const ParticleGpuBuffer& particles) const {
+    gpu::Framebuffer fbo = gpu::createFramebuffer();
+    const GLuint textures[4] = {targets.depths, targets.sums1, targets.sums2, targets.moments};
+    GLenum drawBuffers[4];
+    for (GLuint i = 0; i < 4; ++i) {
+        if (textures[i] != 0) glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0 + i, textures[i], 0);
+        drawBuffers[i] = textures[i] != 0 ? GL_COLOR_ATTACHMENT0 + i : GL_NONE;
+    }
+    glNamedFramebufferDrawBuffers(fbo.id(), 4, drawBuffers);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    // Front and −back start at +∞ for MIN; optical depth and the sums start at 0.
+    const float far[4] = {3.0e38f, 3.0e38f, 3.0e38f, 0.0f}, zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, far);
+    for (GLint i = 1; i < 4; ++i)
+        if (textures[i] != 0) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
+    glViewport(0, 0, plan.atlasSize.x, plan.atlasSize.y);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendEquationSeparatei(0, GL_MIN, GL_FUNC_ADD);  // seed 000 §2.1: min for depths, a separate alpha equation
+    glBlendFunci(0, GL_ONE, GL_ONE);
+    glBlendEquationi(1, GL_FUNC_ADD);
+    glBlendFunci(1, GL_ONE, GL_ONE);
+    glBlendEquationi(2, GL_FUNC_ADD);
+    glBlendFunci(2, GL_ONE, GL_ONE);
+    glBlendEquationi(3, GL_FUNC_ADD);
+    glBlendFunci(3, GL_ONE, GL_ONE);
+    for (GLenum plane = 0; plane < 4; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
+
+    const GLuint program = program_.id();
+    glUseProgram(program);
+    particles.bindParticles();
+    blocks.bind();
+    const glm::mat4 projection = plan.view.viewProjection * glm::inverse(plan.view.view);
+    const glm::mat4 inverseViewProjection = glm::inverse(plan.view.viewProjection);
+    const glm::vec4 params(plan.view.perspective ? 1.0f : 0.0f, plan.view.nearDepth, 0.0f, 0.0f);
+    const glm::vec2 atlas(plan.atlasSize);
+    glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(plan.view.view));
+    glProgramUniformMatrix4fv(program, 1, 1, GL_FALSE, glm::value_ptr(projection));
+    glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
+    glProgramUniform2fv(program, 3, 1, glm::value_ptr(atlas));
+    glProgramUniformMatrix4fv(program, 4, 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
+    glProgramUniform3fv(program, 5, 1, glm::value_ptr(plan.view.eye));
+    glBindVertexArray(vertexArray_.id());
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks.itemCount()));
+    glBindVertexArray(0);
+
+    for (GLenum plane = 0; plane < 4; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
+    glBlendEquation(GL_FUNC_ADD);
+    glDisable(GL_BLEND);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,92 @@
+#pragma once
+// Blocks mode (seed 000): per-frame block data on the GPU and the three passes that use it —
+// impostors (for the camera and for each light view), the camera composite, and the light slices.
+#include <vector>
+
+#include "media_passes.h"
+#include "nimbus/media/block_partition.h"
+#include "nimbus/media/impostor_atlas.h"
+
+namespace nimbus::media {
+
+inline constexpr GLuint kImpostorItemsBinding = 6;
+inline constexpr GLuint kBlockTilesBinding = 7;
+
+struct alignas(16) GpuBlockTile {
+    glm::vec4 rect;          // NDC rectangle in the view
+    glm::vec4 atlas;         // tile in texels (width 0: not drawn)
+    glm::vec4 centreRadius;  // origin-relative centre, mean particle radius
+};
+
+// One view's impostor layout: where every block's tile is, and how big the atlas is.
+struct BlockViewPlan {
+    ImpostorView view;
+    std::vector<GpuBlockTile> tiles;
+    glm::ivec2 atlasSize{1, 1};
+};
+
+BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin, float scale,
+                            int maxAtlasSize);
+
+// The frame's blocks on the GPU: (particle, block) pairs in block order, and a tiles buffer.
+class BlockGpuBuffers {
+public:
+    void uploadItems(const BlockPartition& partition);
+    void uploadTiles(const std::vector<GpuBlockTile>& tiles);
+    void uploadDrawOrder(const std::vector<std::uint32_t>& blocks);
+    void bind() const;
+    std::size_t itemCount() const { return items_; }
+
+private:
+    gpu::Buffer itemBuffer_, tileBuffer_, orderBuffer_;
+    std::size_t itemCapacity_ = 0, tileCapacity_ = 0, orderCapacity_ = 0, items_ = 0;
+};
+
+// The atlas textures one impostor render writes (0: not written). depths (front, −back, τ) is
+// always written; the camera also wants the weighted sums, the lights the depth moments.
+struct ImpostorTargets {
+    GLuint depths = 0;
+    GLuint sums1 = 0;
+    GLuint sums2 = 0;
+    GLuint moments = 0;
+};
+
+// Renders a view's impostors into its atlas. Used by both the camera and the light passes.
+class BlockImpostorRenderer {
+public:
+    BlockImpostorRenderer();
+    void render(const BlockViewPlan& plan, const ImpostorTargets& targets, const BlockGpuBuffers& blocks,
+                const ParticleGpuBuffer& particles) const;
+
+private:
+    gpu::Program program_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+// Camera: impostors into an atlas, then blocks composited back to front into the media target.
+class BlockCompositePass {
+public:
+    BlockCompositePass();
+    void add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
+             const std::vector<std::uint32_t>& backToFront, BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
+             const BlockImpostorRenderer& impostors);
+
+private:
+    gpu::Program program_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+// Light slices from blocks: per light view, light impostors, then each block spread over the slices.
+class BlockSlicePass {
+public:
+    BlockSlicePass();
+    render::ResourceHandle add(render::FrameGraph& graph, const std::vector<SliceView>& views,
+                               const std::vector<BlockViewPlan>& plans, int resolution, BlockGpuBuffers& blocks,
+                               const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors);
+
+private:
+    gpu::Program program_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+}  // namespace nimbus::media

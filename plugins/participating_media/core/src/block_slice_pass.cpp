@@ -1,0 +1,82 @@
+// Blocks mode, light side (seed 000 §2.2): for each light view, the blocks' light impostors, then
+// every block spread over the slices with uniform density between its front and back.
+#include <glm/gtc/type_ptr.hpp>
+
+#include "block_passes.h"
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::media {
+
+BlockSlicePass::BlockSlicePass() {
+    program_ = gpu::compileProgram({.vertex = "media/block_slices.vert", .fragment = "media/block_slices.frag"});
+}
+
+render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std::vector<SliceView>& views,
+                                           const std::vector<BlockViewPlan>& plans, int resolution, BlockGpuBuffers& blocks,
+                                           const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors) {
+    int layers = 0;
+    glm::ivec2 atlas(1);
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        layers = std::max(layers, views[i].firstLayer + (views[i].slices + 3) / 4);
+        atlas = glm::max(atlas, plans[i].atlasSize);
+    }
+    struct Data {
+        render::ResourceHandle slices, impostors, moments;
+    };
+    const auto& data = graph.addPass<Data>(
+        "light_slices",
+        [&](render::PassBuilder& builder, Data& d) {
+            d.slices = builder.create("light_slices", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1});
+            d.impostors = builder.create("block_light_impostors", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
+            d.moments = builder.create("block_light_moments", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
+        },
+        [this, views, &plans, resolution, &blocks, &particles, &impostors](const render::PassResources& r, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            const GLuint program = program_.id();
+            for (std::size_t i = 0; i < views.size(); ++i) {
+                const SliceView& v = views[i];
+                blocks.uploadTiles(plans[i].tiles);
+                impostors.render(plans[i], {.depths = r.id(d.impostors), .moments = r.id(d.moments)}, blocks, particles);
+
+                const int attachments = (v.slices + 3) / 4;
+                GLenum drawBuffers[8];
+                for (int a = 0; a < attachments; ++a) {
+                    glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), r.id(d.slices), 0,
+                                                   v.firstLayer + a);
+                    drawBuffers[a] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a);
+                }
+                glNamedFramebufferDrawBuffers(fbo.id(), attachments, drawBuffers);
+                glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+                const float zero[4] = {0, 0, 0, 0};
+                for (int a = 0; a < attachments; ++a) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, a, zero);
+                glViewport(0, 0, resolution, resolution);
+                glDisable(GL_DEPTH_TEST);
+                glDisable(GL_CULL_FACE);
+                glEnable(GL_BLEND);
+                glBlendEquation(GL_FUNC_ADD);
+                glBlendFunc(GL_ONE, GL_ONE);
+                glUseProgram(program);
+                blocks.bind();
+                glBindTextureUnit(5, r.id(d.impostors));
+                glBindTextureUnit(6, r.id(d.moments));
+                const glm::mat4 inverseViewProjection = glm::inverse(v.view.viewProjection);
+                const glm::vec4 params(v.view.perspective ? 1.0f : 0.0f, v.view.depthNear, v.view.depthFar, static_cast<float>(v.slices));
+                const glm::vec2 size(static_cast<float>(resolution));
+                glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(v.view.view));
+                glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
+                glProgramUniformMatrix4fv(program, 3, 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
+                glProgramUniform2fv(program, 4, 1, glm::value_ptr(size));
+                glProgramUniform3fv(program, 6, 1, glm::value_ptr(v.lightOrigin));
+                glBindVertexArray(vertexArray_.id());
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(plans[i].tiles.size()));
+                glBindVertexArray(0);
+                glDisable(GL_BLEND);
+                for (int a = 0; a < attachments; ++a)
+                    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), 0, 0);
+            }
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.slices;
+}
+
+}  // namespace nimbus::media

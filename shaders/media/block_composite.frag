@@ -1,0 +1,57 @@
+#version 450 core
+// A block impostor texel acts as one "super-particle" (seed 000 §2): opacity from its optical depth,
+// in-scattering at its optical-depth-weighted shading point with its weighted albedo, emission and
+// g. Where the opaque surface lies inside the block's [front, back] interval, the optical depth is
+// scaled by the fraction in front of it (uniform density inside a block, seed 000 §2.4), so a mesh
+// crossing a cloud shows no billboard plane.
+#include "common/math.glsl"
+#include "common/frame.glsl"
+#include "common/lights.glsl"
+#include "common/light_views.glsl"
+#include "common/transmittance.glsl"
+#include "media/optics.glsl"
+#include "media/particle_data.glsl"
+#include "media/lighting.glsl"
+#include "media/block_data.glsl"
+
+layout(binding = 3) uniform sampler2D uSceneDepth;
+layout(binding = 5) uniform sampler2D uImpostorDepths;
+layout(binding = 6) uniform sampler2D uImpostorSums1;
+layout(binding = 7) uniform sampler2D uImpostorSums2;
+
+flat in int vBlock;
+
+layout(location = 0) out vec4 outColor;
+
+void main() {
+    BlockTile tile = blockTiles[vBlock];
+    vec2 ndc = gl_FragCoord.xy * frame.viewport.zw * 2.0 - 1.0;
+    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, true, tile, tileTexel(tile, ndc));
+    if (!(s.tau > 0.0)) discard;
+
+    vec3 origin, dir;
+    cameraRay(gl_FragCoord.xy, origin, dir);
+    float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r);
+    float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
+    if (tSurface <= s.front) discard;  // the block lies wholly behind the surface
+    float extent = s.back - s.front;
+    // front == back (a surface exactly through a lone particle's centre) must not divide by zero.
+    float visible = extent > 1e-6 * max(s.back, 1.0) ? clamp((tSurface - s.front) / extent, 0.0, 1.0) : 1.0;
+    float tau = s.tau * visible;
+    float alpha = oneMinusExpNeg(tau);
+    if (alpha <= 0.0) discard;
+
+    // Composited as one layer, the block is seen mostly through its front: with density uniform over
+    // the visible [front, end], in-scattering is evaluated at the e^−v-weighted mean optical depth v̄
+    // (the same rule as chordShadingPoint, for a uniform instead of a Gaussian profile).
+    float end = min(s.back, tSurface);
+    float fraction = tau < 1e-3 ? 0.5 - tau / 12.0 : (1.0 - (1.0 + tau) * exp(-tau)) / (tau * alpha);
+    float tShade = s.front + fraction * max(end - s.front, 0.0);
+    GpuParticle block;
+    block.positionRadius = vec4(tile.centreRadius.xyz, tile.centreRadius.w);
+    block.albedoSigma = vec4(s.sums1.yzw / s.tau, 0.0);
+    block.emissionG = vec4(s.sums2.xyz / s.tau, clamp(s.sums2.w / s.tau, -0.999, 0.999));
+    block.extra = vec4(0.0);
+    vec3 source = mediumSource(origin + dir * tShade, dir, block);
+    outColor = vec4(source * alpha, alpha);
+}

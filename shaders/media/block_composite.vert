@@ -1,0 +1,19 @@
+#version 450 core
+// Blocks mode (media/block_composite_pass.cpp): one quad per block over its screen rectangle,
+// blocks back to front.
+#include "media/block_data.glsl"
+
+layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
+
+flat out int vBlock;
+
+void main() {
+    vBlock = int(drawOrder[gl_InstanceID]);
+    BlockTile tile = blockTiles[vBlock];
+    if (tile.atlas.z <= 0.0) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+        return;
+    }
+    vec2 corner = vec2(gl_VertexID & 1, gl_VertexID >> 1);
+    gl_Position = vec4(mix(tile.rect.xy, tile.rect.zw, corner), 0.5, 1.0);
+}

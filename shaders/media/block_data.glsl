@@ -1,0 +1,63 @@
+// Blocks of particles (media/block_partition.h) and their impostor tiles (media/impostor_atlas.h).
+struct BlockTile {
+    vec4 rect;          // the block's rectangle in the view's NDC: xy min, zw max
+    vec4 atlas;         // its tile in the atlas: x, y, width, height in texels (width 0: not drawn)
+    vec4 centreRadius;  // xyz origin-relative centre, w mean particle radius
+};
+
+layout(std430, binding = 6) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)
+layout(std430, binding = 7) readonly buffer BlockTiles { BlockTile blockTiles[]; };
+
+// Where a view NDC position falls in a tile, in atlas texels.
+vec2 tileTexel(BlockTile tile, vec2 ndc) {
+    vec2 local = (ndc - tile.rect.xy) / (tile.rect.zw - tile.rect.xy);
+    return tile.atlas.xy + local * tile.atlas.zw;
+}
+
+// The view NDC position an atlas texel stands for.
+vec2 tileNdc(BlockTile tile, vec2 texel) {
+    vec2 local = (texel - tile.atlas.xy) / tile.atlas.zw;
+    return tile.rect.xy + local * (tile.rect.zw - tile.rect.xy);
+}
+
+// One impostor sample: total optical depth, front and back ray distances (seed 000 §2.1), and the
+// optical-depth-weighted sums of shading position, albedo, emission and g.
+struct ImpostorSample {
+    float tau;
+    float front;
+    float back;
+    vec4 sums1;  // τ·t_shade, τ·albedo
+    vec4 sums2;  // τ·emission, τ·g
+};
+
+// Bilinear read of up to three impostor layers inside one tile. Depths are averaged over the texels
+// that hold particles only (an empty texel's depths are sentinels); optical depth and the sums are
+// plain bilinear, so they fade to zero at the silhouette.
+ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, bool withSums, BlockTile tile, vec2 texel) {
+    vec2 p = clamp(texel, tile.atlas.xy + 0.5, tile.atlas.xy + tile.atlas.zw - 0.5) - 0.5;
+    ivec2 base = ivec2(floor(p));
+    vec2 f = p - vec2(base);
+    ivec2 maxTexel = ivec2(tile.atlas.xy + tile.atlas.zw) - 1;
+    ImpostorSample s = ImpostorSample(0.0, 0.0, 0.0, vec4(0.0), vec4(0.0));
+    float depthWeight = 0.0;
+    for (int j = 0; j < 4; ++j) {
+        ivec2 q = min(base + ivec2(j & 1, j >> 1), maxTexel);
+        float w = ((j & 1) == 1 ? f.x : 1.0 - f.x) * ((j >> 1) == 1 ? f.y : 1.0 - f.y);
+        vec4 d = texelFetch(depths, q, 0);
+        s.tau += w * d.a;
+        if (d.a > 0.0) {
+            s.front += w * d.r;
+            s.back -= w * d.g;
+            depthWeight += w;
+        }
+        if (withSums) {
+            s.sums1 += w * texelFetch(sums1, q, 0);
+            s.sums2 += w * texelFetch(sums2, q, 0);
+        }
+    }
+    if (depthWeight > 0.0) {
+        s.front /= depthWeight;
+        s.back /= depthWeight;
+    }
+    return s;
+}

@@ -1,0 +1,45 @@
+#version 450 core
+// A block's optical depth towards the light, spread over the slice planes (seed 000 §2.2): plane k
+// gets τ · Φ((t_k − μ)/σ), μ and σ the block's optical-depth-weighted mean and deviation along the
+// light ray. Additive, like the particle slices.
+#include "common/math.glsl"
+#include "media/optics.glsl"
+#include "media/block_data.glsl"
+#include "media/view_rays.glsl"
+
+layout(location = 0) uniform mat4 uView;
+layout(location = 2) uniform vec4 uParams;  // x: perspective, y: slice near, z: slice far, w: slices
+layout(location = 3) uniform mat4 uInverseViewProjection;
+layout(location = 4) uniform vec2 uViewportSize;
+layout(location = 6) uniform vec3 uLightOrigin;
+layout(binding = 5) uniform sampler2D uImpostorDepths;
+layout(binding = 6) uniform sampler2D uImpostorMoments;
+
+flat in int vBlock;
+
+layout(location = 0) out vec4 outSlices[8];
+
+void main() {
+    BlockTile tile = blockTiles[vBlock];
+    vec2 ndc = gl_FragCoord.xy / uViewportSize * 2.0 - 1.0;
+    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorMoments, uImpostorMoments, true, tile, tileTexel(tile, ndc));
+    if (!(s.tau > 0.0)) discard;
+    vec3 origin, dir;
+    viewRay(ndc, uInverseViewProjection, uView, uParams.x > 0.5, uLightOrigin, origin, dir);
+    vec3 axis = -vec3(uView[0][2], uView[1][2], uView[2][2]);
+    float cosAxis = uParams.x > 0.5 ? max(dot(dir, axis), 1e-6) : 1.0;
+    // How the block's optical depth is spread along the light ray: a Gaussian with the mean and
+    // variance of its particles' kernels (moments the impostor accumulates), which follows a dense
+    // core far better than uniform density between the outermost spheres.
+    float mean = s.sums1.x / s.tau;
+    float deviation = sqrt(max(s.sums1.y / s.tau - mean * mean, 0.0));
+    int slices = int(uParams.w);
+    float spacing = (uParams.z - uParams.y) / uParams.w;
+    vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    for (int k = 0; k < slices; ++k) {
+        float t = (uParams.y + float(k + 1) * spacing) / cosAxis;
+        float fraction = deviation > 1e-6 ? 0.5 * (1.0 + erfApprox((t - mean) / (deviation * 1.41421356))) : (t >= mean ? 1.0 : 0.0);
+        values[k / 4][k - 4 * (k / 4)] = s.tau * fraction;
+    }
+    for (int a = 0; a < 8; ++a) outSlices[a] = values[a];
+}
