@@ -7,12 +7,8 @@
 
 #include "commands.h"
 #include "nimbus/assets/image_io.h"
-#include "nimbus/assets/scene_queries.h"
 #include "nimbus/base/error.h"
 #include "nimbus/base/log.h"
-#include "nimbus/media/ecs/media_plugin.h"
-#include "nimbus/media/media_scene.h"
-#include "nimbus/scene/scene_plugin.h"
 #include "nimbus/media/reference/reference_renderer.h"
 #include "session.h"
 
@@ -29,17 +25,6 @@ struct ReferenceOptions {
     int threads = 0;
 };
 
-// What a synthesized camera must frame: the meshes and every particle's sphere.
-assets::Aabb visibleBounds(const assets::Scene& scene, const std::vector<glm::dmat4>& world, const media::ParticleSet& particles) {
-    assets::Aabb bounds = assets::meshBounds(scene, world);
-    for (std::size_t i = 0; i < particles.size(); ++i) {
-        const double r = particles.radius[i];
-        bounds.extend(particles.position[i] - glm::dvec3(r));
-        bounds.extend(particles.position[i] + glm::dvec3(r));
-    }
-    return bounds;
-}
-
 int run(const ReferenceOptions& o) {
     int width = 0, height = 0;
     parseSize(o.size, width, height);
@@ -51,18 +36,9 @@ int run(const ReferenceOptions& o) {
     // The same Session the real-time renderer starts from: the same simulation steps, node poses
     // and particle set, so `compare` measures the renderers and nothing else.
     Session session({o.scene, o.time, {}});
-    const assets::Scene& scene = session.scene();
-    const std::vector<glm::dmat4> world = scene::currentWorldTransforms(session.app().world());
-    media::ParticleSet particles;
-    media::ecs::gatherParticles(session.app().world(), particles);
-
-    media::reference::ReferenceInputs inputs;
-    inputs.scene = &scene;
-    inputs.world = &world;
-    inputs.camera = assets::resolveCamera(scene, world, o.camera, visibleBounds(scene, world, particles),
-                                          static_cast<double>(width) / height);
-    inputs.lights = assets::resolveLights(scene, world);
-    inputs.particles = &particles;
+    const auto reference = makeReferenceScene(session, o.camera, width, height);
+    const media::reference::ReferenceInputs& inputs = reference->inputs;
+    const media::ParticleSet& particles = reference->particles;
 
     media::reference::ReferenceSettings settings;
     settings.width = width;

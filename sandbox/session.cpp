@@ -4,7 +4,9 @@
 
 #include "nimbus/base/error.h"
 #include "nimbus/base/settings.h"
+#include "nimbus/assets/scene_queries.h"
 #include "nimbus/media/ecs/media_plugin.h"
+#include "nimbus/media/media_renderer.h"
 #include "nimbus/render/render_plugin.h"
 #include "nimbus/scene/scene_plugin.h"
 
@@ -22,6 +24,34 @@ Session::Session(const SessionOptions& options) {
 }
 
 double Session::time() const { return scene::simulationTime(*app_); }
+
+assets::RgbImage Session::renderRealtime(int width, int height, const std::string& camera) {
+    auto& request = app_->resource<render::RenderRequest>();
+    request.enabled = true;
+    request.settings.width = width;
+    request.settings.height = height;
+    request.camera = camera;
+    app_->runPhase(ecs::phases::kPrepare);
+    app_->runPhase(ecs::phases::kRender);
+    app_->runPhase(ecs::phases::kPresent);
+    return app_->resource<render::RendererState>().renderer->readOutput();
+}
+
+std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height) {
+    auto out = std::make_unique<ReferenceScene>();
+    ecs::World& world = session.app().world();
+    out->world = scene::currentWorldTransforms(world);
+    media::ecs::gatherParticles(world, out->particles);
+    // A synthesized camera frames what the real-time path frames: the meshes and the particle spheres.
+    assets::Aabb bounds = assets::meshBounds(session.scene(), out->world);
+    bounds.extend(media::particleBounds(out->particles));
+    out->inputs.scene = &session.scene();
+    out->inputs.world = &out->world;
+    out->inputs.camera = assets::resolveCamera(session.scene(), out->world, camera, bounds, static_cast<double>(width) / height);
+    out->inputs.lights = assets::resolveLights(session.scene(), out->world);
+    out->inputs.particles = &out->particles;
+    return out;
+}
 
 void parseSize(const std::string& text, int& width, int& height, const std::string& option) {
     const auto x = text.find('x');

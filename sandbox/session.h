@@ -6,8 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "nimbus/assets/image_io.h"
 #include "nimbus/assets/scene.h"
 #include "nimbus/ecs/app.h"
+#include "nimbus/media/particle_set.h"
+#include "nimbus/media/reference/reference_renderer.h"
 
 namespace nimbus::sandbox {
 
@@ -28,10 +31,23 @@ public:
     std::shared_ptr<const assets::Scene> sharedScene() const { return scene_; }
     double time() const;
 
+    // One real-time frame of the current state at width×height through `camera` (empty: the
+    // scene's first). Needs a current GL context that outlives the session. Rendering stays on.
+    assets::RgbImage renderRealtime(int width, int height, const std::string& camera = "");
+
 private:
     std::shared_ptr<const assets::Scene> scene_;
     std::unique_ptr<ecs::App> app_;
 };
+
+// What the reference renderer needs for the session's current state: the same node poses, the
+// same particles and the same camera rule as the real-time path. Owns what the inputs point to.
+struct ReferenceScene {
+    std::vector<glm::dmat4> world;
+    media::ParticleSet particles;
+    media::reference::ReferenceInputs inputs;
+};
+std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height);
 
 // Parses "WxH" (1..16384 each); throws InputError naming the option otherwise.
 void parseSize(const std::string& text, int& width, int& height, const std::string& option = "--size");
