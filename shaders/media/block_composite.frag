@@ -19,19 +19,22 @@ layout(binding = 5) uniform sampler2D uImpostorDepths;
 layout(binding = 6) uniform sampler2D uImpostorSums1;
 layout(binding = 7) uniform sampler2D uImpostorSums2;
 
+layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
+
 flat in int vBlock;
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
     BlockTile tile = blockTiles[vBlock];
-    vec2 ndc = gl_FragCoord.xy * frame.viewport.zw * 2.0 - 1.0;
+    vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
+    vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
     ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, true, tile, tileTexel(tile, ndc));
     if (!(s.tau > 0.0)) discard;
 
     vec3 origin, dir;
-    cameraRay(gl_FragCoord.xy, origin, dir);
-    float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r);
+    cameraRay(fragCoord, origin, dir);
+    float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
     float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
     if (tSurface <= s.front) discard;  // the block lies wholly behind the surface
     float extent = s.back - s.front;

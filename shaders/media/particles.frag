@@ -14,6 +14,7 @@
 
 layout(binding = 3) uniform sampler2D uSceneDepth;
 layout(location = 0) uniform int uSoftParticles;
+layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
 
 flat in int vParticle;
 
@@ -22,11 +23,12 @@ layout(location = 0) out vec4 outColor;
 void main() {
     GpuParticle particle = particles[vParticle];
     vec3 origin, dir;
-    cameraRay(gl_FragCoord.xy, origin, dir);
+    vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
+    cameraRay(fragCoord, origin, dir);
     Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, particle.positionRadius.w);
     if (chord.halfChord <= 0.0) discard;
 
-    float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r);
+    float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
     float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
     float tEnd = 1e30;
     if (uSoftParticles != 0) {

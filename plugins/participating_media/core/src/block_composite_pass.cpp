@@ -14,9 +14,10 @@ BlockCompositePass::BlockCompositePass() {
     program_ = gpu::compileProgram({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"});
 }
 
-void BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
-                             const std::vector<std::uint32_t>& backToFront, BlockGpuBuffers& blocks,
-                             const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors) {
+render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
+                                               const std::vector<std::uint32_t>& backToFront, BlockGpuBuffers& blocks,
+                                               const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors,
+                                               const MediaTarget& target) {
     struct Impostors {
         render::ResourceHandle depths, sums1, sums2;
     };
@@ -36,11 +37,11 @@ void BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& co
     struct Composite {
         render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2;
     };
-    const int w = context.view.width, h = context.view.height;
+    const int w = target.size.x, h = target.size.y;
     const auto& data = graph.addPass<Composite>(
         "media_blocks",
         [&](render::PassBuilder& builder, Composite& d) {
-            d.media = builder.create("media_color", {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
             d.depth = builder.read(context.sceneDepth);
             if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
             if (context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
@@ -48,7 +49,8 @@ void BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& co
             d.sums1 = builder.read(made.sums1);
             d.sums2 = builder.read(made.sums2);
         },
-        [this, &context, &plan, &backToFront, &blocks, w, h](const render::PassResources& r, const Composite& d) {
+        [this, &context, &plan, &backToFront, &blocks, w, h, scale = target.fullResScale](const render::PassResources& r,
+                                                                                            const Composite& d) {
             blocks.uploadTiles(plan.tiles);
             blocks.uploadDrawOrder(backToFront);
             gpu::Framebuffer fbo = gpu::createFramebuffer();
@@ -59,6 +61,7 @@ void BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& co
             const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
             glUseProgram(program_.id());
+            glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
             context.frameData->bind();
             blocks.bind();
             glBindTextureUnit(render::kSceneDepthUnit, r.id(d.depth));
@@ -78,7 +81,7 @@ void BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& co
             glDisable(GL_BLEND);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
-    context.mediaColor = data.media;
+    return data.media;
 }
 
 }  // namespace nimbus::media

@@ -67,9 +67,10 @@ private:
 class BlockCompositePass {
 public:
     BlockCompositePass();
-    void add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
-             const std::vector<std::uint32_t>& backToFront, BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
-             const BlockImpostorRenderer& impostors);
+    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
+                               const std::vector<std::uint32_t>& backToFront, BlockGpuBuffers& blocks,
+                               const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors,
+                               const MediaTarget& target);
 
 private:
     gpu::Program program_;

@@ -30,15 +30,37 @@ private:
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();  // core profile: one must be bound
 };
 
+// The media target of one frame: full resolution, or reduced (seed 002's offscreen particles) and
+// upsampled afterwards. A mode pass renders into `size`; texel i stands for full-resolution
+// position (i + 0.5) · fullResScale.
+struct MediaTarget {
+    glm::ivec2 size{1};
+    glm::vec2 fullResScale{1.0f};
+    const char* name = "media_color";
+};
+
 // `particles` mode: sorted soft billboards into the media target (rgb in-scatter, a transmittance).
 class ParticlePass {
 public:
     ParticlePass();
     render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
-                               bool softParticles);
+                               bool softParticles, const MediaTarget& target);
 
 private:
     gpu::Program program_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+// Seed 002: the depth each reduced texel used, then a depth-aware upsampling to full resolution.
+class MediaUpsamplePass {
+public:
+    MediaUpsamplePass();
+    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, render::ResourceHandle low,
+                               const MediaTarget& target, float threshold);
+
+private:
+    gpu::Program depthProgram_;
+    gpu::Program upsampleProgram_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

@@ -128,9 +128,17 @@ float MediaRenderer::impostorScale() const { return settings_.impostorScale > 0.
 
 void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext& context) {
     if (particles_ == nullptr || particles_->empty()) return;
+    const render::View& v = context.view;
+    const float scale = settings_.mediaScale > 0.0f ? std::min(settings_.mediaScale, 1.0f) : 1.0f;
+    MediaTarget target;
+    target.size = glm::max(glm::ivec2(glm::round(glm::vec2(v.width, v.height) * scale)), glm::ivec2(1));
+    target.fullResScale = glm::vec2(v.width, v.height) / glm::vec2(target.size);
+    const bool reduced = target.size != glm::ivec2(v.width, v.height);
+    if (reduced) target.name = "media_color_low";
+
+    render::ResourceHandle media;
     if (settings_.mode == MediaMode::Blocks) {
-        const render::View& v = context.view;
-        const ImpostorView view{v.view, v.viewProjection, !v.orthographic, glm::vec3(0.0f), v.znear, glm::ivec2(v.width, v.height)};
+        const ImpostorView view{v.view, v.viewProjection, !v.orthographic, glm::vec3(0.0f), v.znear, target.size};
         BlockFrame& frame = *blockFrame_;
         frame.cameraPlan = planBlockView(frame.partition, view, v.origin, impostorScale(), kMaxAtlasSize);
         stats_.impostorAtlas = frame.cameraPlan.atlasSize;
@@ -146,11 +154,18 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
                          [&](std::uint32_t a, std::uint32_t b) { return keys[a] > keys[b]; });
         if (!impostorRenderer_) impostorRenderer_ = std::make_unique<BlockImpostorRenderer>();
         if (!blockCompositePass_) blockCompositePass_ = std::make_unique<BlockCompositePass>();
-        blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, *blockBuffers_, *buffer_, *impostorRenderer_);
-        return;
+        media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, *blockBuffers_, *buffer_,
+                                         *impostorRenderer_, target);
+    } else {
+        if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
+        media = particlePass_->add(graph, context, *buffer_, settings_.softParticles, target);
     }
-    if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
-    particlePass_->add(graph, context, *buffer_, settings_.softParticles);
+    if (reduced) {
+        if (!upsamplePass_) upsamplePass_ = std::make_unique<MediaUpsamplePass>();
+        const float threshold = settings_.upsampleThreshold > 0.0f ? settings_.upsampleThreshold : 0.05f;
+        media = upsamplePass_->add(graph, context, media, target, threshold);
+    }
+    context.mediaColor = media;
 }
 
 }  // namespace nimbus::media

@@ -15,20 +15,21 @@ ParticlePass::ParticlePass() {
 }
 
 render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::FrameContext& context,
-                                         const ParticleGpuBuffer& buffer, bool softParticles) {
+                                         const ParticleGpuBuffer& buffer, bool softParticles, const MediaTarget& target) {
     struct Data {
         render::ResourceHandle media, depth, shadowMap, slices;
     };
-    const int w = context.view.width, h = context.view.height;
+    const int w = target.size.x, h = target.size.y;
     const auto& data = graph.addPass<Data>(
         "media_particles",
         [&](render::PassBuilder& builder, Data& d) {
-            d.media = builder.create("media_color", {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
             d.depth = builder.read(context.sceneDepth);
             if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
             if (context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
         },
-        [this, &context, &buffer, softParticles, w, h](const render::PassResources& resources, const Data& d) {
+        [this, &context, &buffer, softParticles, w, h, scale = target.fullResScale](const render::PassResources& resources,
+                                                                                       const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
             glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
@@ -45,6 +46,7 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
             glProgramUniform1i(program_.id(), 0, softParticles ? 1 : 0);
+            glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
             glDisable(GL_DEPTH_TEST);  // the fragment shader clips against scene depth itself
             glDisable(GL_CULL_FACE);
             glEnable(GL_BLEND);
@@ -56,7 +58,6 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
             glDisable(GL_BLEND);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
-    context.mediaColor = data.media;
     return data.media;
 }
 

@@ -46,6 +46,8 @@ MediaRenderSettings readSettings(const Settings* settings) {
     if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
     if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
     if (auto v = settings->number("impostor_scale", 0.05, 4.0)) s.impostorScale = static_cast<float>(*v);
+    if (auto v = settings->number("media_scale", 0.0625, 1.0)) s.mediaScale = static_cast<float>(*v);
+    if (auto v = settings->number("upsample_threshold", 1e-4, 10.0)) s.upsampleThreshold = static_cast<float>(*v);
     return s;
 }
 
@@ -111,6 +113,8 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(sqrt(particles)))");
     settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
+    settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25 (default 1)");
+    settings.declare("upsample_threshold", "offscreen media: relative depth difference treated as an edge (default 0.05)");
     app.resource<scene::SceneSpawners>().add("media", spawnMedia);
     app.addSystem({.name = kEmitSystem, .phase = nimbus::ecs::phases::kSimulate, .after = {scene::kAnimateSystem}}, emitSystem);
     app.addSystem({.name = kLightSliceSystem, .phase = nimbus::ecs::phases::kPrepare}, gatherSystem);

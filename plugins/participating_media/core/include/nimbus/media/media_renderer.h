@@ -27,6 +27,8 @@ struct MediaRenderSettings {
     bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
     int blocks = 0;            // blocks mode: block count; 0: automatic (block_partition.h)
     float impostorScale = 0.0f;  // blocks mode: impostor texels per covered pixel; 0: 0.5
+    float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
+    float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.05
 };
 
 struct MediaFrameStats {
@@ -44,6 +46,7 @@ class BlockGpuBuffers;
 class BlockImpostorRenderer;
 class BlockCompositePass;
 class BlockSlicePass;
+class MediaUpsamplePass;
 struct BlockFrame;
 
 class MediaRenderer final : public render::RenderExtension {
@@ -78,6 +81,7 @@ private:
     std::unique_ptr<BlockImpostorRenderer> impostorRenderer_;
     std::unique_ptr<BlockCompositePass> blockCompositePass_;
     std::unique_ptr<BlockSlicePass> blockSlicePass_;
+    std::unique_ptr<MediaUpsamplePass> upsamplePass_;
 };
 
 // World bounds of the particle spheres.
