@@ -31,6 +31,10 @@ void main() {
     vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
     ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, true, tile, tileTexel(tile, ndc));
     if (!(s.tau > 0.0)) discard;
+    // An instance of the prototype sits farther or nearer than the prototype the tile was made for.
+    s.front += tile.instance.x;
+    s.back += tile.instance.x;
+    s.sums1.x += s.tau * tile.instance.x;
 
     vec3 origin, dir;
     cameraRay(fragCoord, origin, dir);

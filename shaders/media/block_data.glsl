@@ -3,6 +3,7 @@ struct BlockTile {
     vec4 rect;          // the block's rectangle in the view's NDC: xy min, zw max
     vec4 atlas;         // its tile in the atlas: x, y, width, height in texels (width 0: not drawn)
     vec4 centreRadius;  // xyz origin-relative centre, w mean particle radius
+    vec4 instance;      // x: ray-distance offset of the tile's depths (an instanced prototype), else 0
 };
 
 layout(std430, binding = 6) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)

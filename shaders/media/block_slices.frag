@@ -31,7 +31,7 @@ void main() {
     // How the block's optical depth is spread along the light ray: a Gaussian with the mean and
     // variance of its particles' kernels (moments the impostor accumulates), which follows a dense
     // core far better than uniform density between the outermost spheres.
-    float mean = s.sums1.x / s.tau;
+    float mean = s.sums1.x / s.tau + tile.instance.x;  // an instanced prototype is shifted along the light
     float deviation = sqrt(max(s.sums1.y / s.tau - mean * mean, 0.0));
     int slices = int(uParams.w);
     float spacing = (uParams.z - uParams.y) / uParams.w;

@@ -33,6 +33,16 @@ void Settings::set(const std::string& key, const std::string& value, const std::
     origins_[key] = origin;
 }
 
+void Settings::setDefault(const std::string& key, const std::string& value, const std::string& origin) {
+    if (declared(key) && has(key)) return;  // the command line (or an earlier source) wins
+    set(key, value, origin);              // throws for an undeclared key
+}
+
+std::string Settings::origin(const std::string& key) const {
+    const auto it = origins_.find(key);
+    return it == origins_.end() ? std::string() : it->second;
+}
+
 std::optional<double> Settings::number(const std::string& key, double min, double max) const {
     const auto it = values_.find(key);
     if (it == values_.end()) return std::nullopt;

@@ -1,6 +1,7 @@
 // Depth impostors of blocks (seed 000 §2.1): every particle drawn once into its block's atlas tile,
 // blending MIN for the front/back depths and ADD for optical depth in the same pass.
 #include <algorithm>
+#include <numeric>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -32,17 +33,65 @@ BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView&
         plan.tiles[b].atlas = glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y), static_cast<float>(t.width),
                                         static_cast<float>(t.height));
         plan.tiles[b].centreRadius = glm::vec4(glm::vec3(partition.blocks[b].centre - origin), partition.blocks[b].meanParticleRadius);
+        plan.tiles[b].instance = glm::vec4(0.0f);
     }
     return plan;
 }
 
-void BlockGpuBuffers::uploadItems(const BlockPartition& partition) {
-    std::vector<glm::uvec2> items(partition.order.size());
-    for (std::size_t b = 0; b < partition.blocks.size(); ++b)
-        for (std::uint32_t k = 0; k < partition.blocks[b].count; ++k) {
-            const std::uint32_t slot = partition.blocks[b].first + k;
-            items[slot] = glm::uvec2(partition.order[slot], static_cast<std::uint32_t>(b));
-        }
+BlockViewPlan planInstancedBlockView(const BlockPartition& partition, std::size_t prototype, const ImpostorView& view,
+                                     const glm::dvec3& origin, float scale, int maxAtlasSize) {
+    // Every instance has the prototype's shape: its sphere around its own centre.
+    BlockPartition shapes = partition;
+    for (Block& b : shapes.blocks) b.radius = partition.blocks[prototype].radius;
+    BlockViewPlan plan;
+    plan.view = view;
+    const std::vector<glm::vec4> rects = blockRectangles(shapes, view, origin);
+    std::vector<glm::ivec2> sizes(rects.size(), glm::ivec2(0));
+    sizes[prototype] = tileSizes({rects[prototype]}, view.viewport, scale).front();
+    const AtlasLayout layout = packAtlas(sizes, maxAtlasSize);
+    const AtlasTile& t = layout.tiles[prototype];
+    plan.atlasSize = glm::ivec2(layout.width, layout.height);
+    const glm::dmat4 viewMatrix(view.view);
+    auto distance = [&](const glm::dvec3& centre) {
+        const glm::dvec3 c(viewMatrix * glm::dvec4(centre - origin, 1.0));
+        return view.perspective ? glm::length(c - glm::dvec3(viewMatrix * glm::dvec4(glm::dvec3(view.eye), 1.0))) : -c.z;
+    };
+    const double prototypeDistance = distance(partition.blocks[prototype].centre);
+    plan.tiles.resize(partition.blocks.size());
+    for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
+        GpuBlockTile& tile = plan.tiles[b];
+        tile.rect = rects[b];
+        const bool visible = rects[b].z > rects[b].x && t.width > 0;
+        tile.atlas = visible ? glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y), static_cast<float>(t.width),
+                                         static_cast<float>(t.height))
+                             : glm::vec4(0.0f);
+        tile.centreRadius = glm::vec4(glm::vec3(partition.blocks[b].centre - origin), partition.blocks[prototype].meanParticleRadius);
+        tile.instance = glm::vec4(static_cast<float>(distance(partition.blocks[b].centre) - prototypeDistance), 0.0f, 0.0f, 0.0f);
+    }
+    // The prototype's own tile must exist for its impostor to be rendered, even when it is off-view.
+    if (t.width > 0) plan.tiles[prototype].atlas = glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y),
+                                                             static_cast<float>(t.width), static_cast<float>(t.height));
+    return plan;
+}
+
+std::size_t choosePrototype(const BlockPartition& partition) {
+    std::vector<std::size_t> order(partition.blocks.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return partition.blocks[a].radius < partition.blocks[b].radius; });
+    return order.empty() ? 0 : order[order.size() / 2];
+}
+
+void BlockGpuBuffers::uploadItems(const BlockPartition& partition) { uploadItems(partition, partition.blocks.size()); }
+
+void BlockGpuBuffers::uploadItems(const BlockPartition& partition, std::size_t onlyBlock) {
+    std::vector<glm::uvec2> items;
+    items.reserve(partition.order.size());
+    for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
+        if (onlyBlock < partition.blocks.size() && b != onlyBlock) continue;
+        for (std::uint32_t k = 0; k < partition.blocks[b].count; ++k)
+            items.emplace_back(partition.order[partition.blocks[b].first + k], static_cast<std::uint32_t>(b));
+    }
     items_ = items.size();
     ensure(itemBuffer_, itemCapacity_, std::max<std::size_t>(items.size(), 1) * sizeof(glm::uvec2));
     if (!items.empty()) glNamedBufferSubData(itemBuffer_.id(), 0, static_cast<GLsizeiptr>(items.size() * sizeof(glm::uvec2)), items.data());

@@ -16,6 +16,7 @@ struct alignas(16) GpuBlockTile {
     glm::vec4 rect;          // NDC rectangle in the view
     glm::vec4 atlas;         // tile in texels (width 0: not drawn)
     glm::vec4 centreRadius;  // origin-relative centre, mean particle radius
+    glm::vec4 instance;      // x: ray-distance offset added to the tile's depths (instanced prototype; else 0)
 };
 
 // One view's impostor layout: where every block's tile is, and how big the atlas is.
@@ -28,10 +29,20 @@ struct BlockViewPlan {
 BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin, float scale,
                             int maxAtlasSize);
 
+// Self-similar instancing: every block is drawn as a copy of block `prototype`, so the atlas holds
+// one tile (the prototype's) that every block's rectangle maps onto, with its depths shifted by the
+// block's distance from the prototype along the view.
+BlockViewPlan planInstancedBlockView(const BlockPartition& partition, std::size_t prototype, const ImpostorView& view,
+                                     const glm::dvec3& origin, float scale, int maxAtlasSize);
+
+// The block whose bounding radius is the median: a representative prototype.
+std::size_t choosePrototype(const BlockPartition& partition);
+
 // The frame's blocks on the GPU: (particle, block) pairs in block order, and a tiles buffer.
 class BlockGpuBuffers {
 public:
     void uploadItems(const BlockPartition& partition);
+    void uploadItems(const BlockPartition& partition, std::size_t onlyBlock);  // instancing: the prototype's particles
     void uploadTiles(const std::vector<GpuBlockTile>& tiles);
     void uploadDrawOrder(const std::vector<std::uint32_t>& blocks);
     void bind() const;

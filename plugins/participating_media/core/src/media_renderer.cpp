@@ -15,6 +15,8 @@ namespace nimbus::media {
 // execute steps read after setup returns.
 struct BlockFrame {
     BlockPartition partition;
+    bool instanced = false;
+    std::size_t prototype = 0;              // instancing: the block every block is drawn as
     std::vector<BlockViewPlan> lightPlans;  // one per slice view
     BlockViewPlan cameraPlan;
     std::vector<std::uint32_t> backToFront;
@@ -67,6 +69,8 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
         if (!blockFrame_) blockFrame_ = std::make_unique<BlockFrame>();
         if (!blockBuffers_) blockBuffers_ = std::make_unique<BlockGpuBuffers>();
         blockFrame_->partition = partitionIntoBlocks(*particles_, settings_.blocks);
+        blockFrame_->instanced = settings_.instancing;
+        blockFrame_->prototype = choosePrototype(blockFrame_->partition);
         blockFrame_->lightPlans.clear();
         stats_.blocks = static_cast<int>(blockFrame_->partition.blocks.size());
     }
@@ -76,7 +80,8 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
         "media_upload", [](render::PassBuilder& builder, Upload&) { builder.sideEffect(); },
         [this, &context, blocks](const render::PassResources&, const Upload&) {
             buffer_->upload(*particles_, context.view.origin);
-            if (blocks) blockBuffers_->uploadItems(blockFrame_->partition);
+            if (blocks && blockFrame_->instanced) blockBuffers_->uploadItems(blockFrame_->partition, blockFrame_->prototype);
+            else if (blocks) blockBuffers_->uploadItems(blockFrame_->partition);
             else buffer_->sortBackToFront(*particles_, context.view);
         });
 
@@ -111,8 +116,7 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
         for (const SliceView& v : views) {
             const ImpostorView view{v.view.view, v.view.viewProjection, v.view.perspective, v.lightOrigin, 0.0f,
                                     glm::ivec2(resolution)};
-            blockFrame_->lightPlans.push_back(planBlockView(blockFrame_->partition, view, context.view.origin,
-                                                            impostorScale(), kMaxAtlasSize));
+            blockFrame_->lightPlans.push_back(planFor(view, context.view.origin));
         }
         if (!impostorRenderer_) impostorRenderer_ = std::make_unique<BlockImpostorRenderer>();
         if (!blockSlicePass_) blockSlicePass_ = std::make_unique<BlockSlicePass>();
@@ -122,6 +126,12 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
     }
     if (!slicePass_) slicePass_ = std::make_unique<LightSlicePass>();
     context.transmittanceSlices = slicePass_->add(graph, views, resolution, *buffer_);
+}
+
+BlockViewPlan MediaRenderer::planFor(const ImpostorView& view, const glm::dvec3& origin) const {
+    const BlockFrame& frame = *blockFrame_;
+    return frame.instanced ? planInstancedBlockView(frame.partition, frame.prototype, view, origin, impostorScale(), kMaxAtlasSize)
+                           : planBlockView(frame.partition, view, origin, impostorScale(), kMaxAtlasSize);
 }
 
 float MediaRenderer::impostorScale() const { return settings_.impostorScale > 0.0f ? settings_.impostorScale : 0.5f; }
@@ -140,7 +150,7 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
     if (settings_.mode == MediaMode::Blocks) {
         const ImpostorView view{v.view, v.viewProjection, !v.orthographic, glm::vec3(0.0f), v.znear, target.size};
         BlockFrame& frame = *blockFrame_;
-        frame.cameraPlan = planBlockView(frame.partition, view, v.origin, impostorScale(), kMaxAtlasSize);
+        frame.cameraPlan = planFor(view, v.origin);
         stats_.impostorAtlas = frame.cameraPlan.atlasSize;
         // Back to front by distance from the eye to the block centre (depth along the axis when orthographic).
         std::vector<double> keys(frame.partition.blocks.size());

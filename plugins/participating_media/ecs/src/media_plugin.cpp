@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
+#include "nimbus/base/error.h"
 #include "nimbus/base/log.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/ecs/frame_info.h"
@@ -17,9 +19,43 @@ namespace {
 using nimbus::ecs::Entity;
 using nimbus::ecs::World;
 
+MediaRenderSettings readSettings(const Settings* settings);
+
+std::string settingText(const nlohmann::json& value) {
+    if (value.is_boolean()) return value.get<bool>() ? "on" : "off";
+    if (value.is_string()) return value.get<std::string>();
+    return value.dump();  // numbers as written
+}
+
+// A node's "render" object holds scene defaults for the renderer's settings (docs/scene-format.md
+// §3.5): the command line's --set wins, two nodes may not disagree, and every value is checked now,
+// at load, by the same parser the renderer uses.
+void applyRenderOverrides(World& world, const assets::Scene& scene, const MediaScene& media) {
+    auto* settings = world.tryResource<Settings>();
+    if (settings == nullptr) return;
+    std::map<std::string, std::pair<std::string, std::string>> seen;  // key → (value, where)
+    for (const MediaNode& node : media.nodes) {
+        if (node.render.is_null()) continue;
+        const std::string where = scene.displayName() + ": node \"" + node.name + "\" (nodes[" + std::to_string(node.node) +
+                                  "]): extensions.NIMBUS_participating_media.render";
+        if (!node.render.is_object()) throwInputError(where, "", "", "must be an object");
+        for (auto it = node.render.begin(); it != node.render.end(); ++it) {
+            const std::string value = settingText(it.value());
+            const std::string origin = where + "." + it.key();
+            if (const auto previous = seen.find(it.key()); previous != seen.end() && previous->second.first != value)
+                throwInputError(origin, "", "", "'" + value + "' disagrees with " + previous->second.second + " ('" +
+                                                    previous->second.first + "'): the renderer has one value per frame");
+            seen.emplace(it.key(), std::make_pair(value, origin));
+            settings->setDefault(it.key(), value, origin);
+        }
+    }
+    (void)readSettings(settings);  // a bad value is refused at load, naming the node and field
+}
+
 void spawnMedia(World& world, const assets::Scene& scene) {
     const MediaScene media = parseMediaScene(scene);  // throws before anything is added
     if (media.empty()) return;
+    applyRenderOverrides(world, scene, media);
     std::vector<Entity> byNode(scene.nodes.size(), nimbus::ecs::kNullEntity);
     world.view<scene::SceneNode>().each([&](Entity e, const scene::SceneNode& node) {
         if (node.node >= 0 && static_cast<std::size_t>(node.node) < byNode.size()) byNode[static_cast<std::size_t>(node.node)] = e;
@@ -48,6 +84,7 @@ MediaRenderSettings readSettings(const Settings* settings) {
     if (auto v = settings->number("impostor_scale", 0.05, 4.0)) s.impostorScale = static_cast<float>(*v);
     if (auto v = settings->number("media_scale", 0.0625, 1.0)) s.mediaScale = static_cast<float>(*v);
     if (auto v = settings->number("upsample_threshold", 1e-4, 10.0)) s.upsampleThreshold = static_cast<float>(*v);
+    if (auto v = settings->boolean("instancing")) s.instancing = *v;
     return s;
 }
 
@@ -114,6 +151,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(sqrt(particles)))");
     settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
     settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25 (default 1)");
+    settings.declare("instancing", "blocks mode: build the cloud from one block prototype instanced at every block (default off)");
     settings.declare("upsample_threshold", "offscreen media: relative depth difference treated as an edge (default 0.05)");
     app.resource<scene::SceneSpawners>().add("media", spawnMedia);
     app.addSystem({.name = kEmitSystem, .phase = nimbus::ecs::phases::kSimulate, .after = {scene::kAnimateSystem}}, emitSystem);

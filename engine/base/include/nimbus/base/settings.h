@@ -25,7 +25,12 @@ public:
     void assign(const std::string& assignment, const std::string& origin = "--set");
     void set(const std::string& key, const std::string& value, const std::string& origin = "--set");
 
+    // A value from a lower-priority source (a scene's defaults): kept only when the key is unset,
+    // so the command line wins. Throws InputError for an undeclared key.
+    void setDefault(const std::string& key, const std::string& value, const std::string& origin);
+
     bool has(const std::string& key) const { return values_.count(key) != 0; }
+    std::string origin(const std::string& key) const;
     // Typed reads: std::nullopt when unset; InputError naming the key when the value does not parse
     // or lies outside [min, max].
     std::optional<double> number(const std::string& key, double min, double max) const;

@@ -27,6 +27,7 @@ struct MediaRenderSettings {
     bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
     int blocks = 0;            // blocks mode: block count; 0: automatic (block_partition.h)
     float impostorScale = 0.0f;  // blocks mode: impostor texels per covered pixel; 0: 0.5
+    bool instancing = false;   // blocks mode: one block prototype instanced at every block (seed 000 §2's b + N/b)
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.05
 };
@@ -48,6 +49,8 @@ class BlockCompositePass;
 class BlockSlicePass;
 class MediaUpsamplePass;
 struct BlockFrame;
+struct BlockViewPlan;
+struct ImpostorView;
 
 class MediaRenderer final : public render::RenderExtension {
 public:
@@ -67,6 +70,7 @@ public:
 
 private:
     float impostorScale() const;
+    BlockViewPlan planFor(const ImpostorView& view, const glm::dvec3& origin) const;
 
     const ParticleSet* particles_ = nullptr;
     MediaRenderSettings settings_;
