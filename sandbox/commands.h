@@ -13,5 +13,6 @@ CommandRunner addRenderCommand(CLI::App& app);
 CommandRunner addReferenceCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
 CommandRunner addValidateCommand(CLI::App& app);
+CommandRunner addBenchCommand(CLI::App& app);
 
 }  // namespace nimbus::sandbox

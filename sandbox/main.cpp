@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     runners["reference"] = addReferenceCommand(app);
     runners["compare"] = addCompareCommand(app);
     runners["validate"] = addValidateCommand(app);
+    runners["bench"] = addBenchCommand(app);
 
     try {
         app.parse(argc, argv);

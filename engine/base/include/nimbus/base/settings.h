@@ -30,6 +30,10 @@ public:
     void setDefault(const std::string& key, const std::string& value, const std::string& origin);
 
     bool has(const std::string& key) const { return values_.count(key) != 0; }
+    void unset(const std::string& key) {
+        values_.erase(key);
+        origins_.erase(key);
+    }
     std::string origin(const std::string& key) const;
     // Typed reads: std::nullopt when unset; InputError naming the key when the value does not parse
     // or lies outside [min, max].

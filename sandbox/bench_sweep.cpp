@@ -1,0 +1,126 @@
+#include "bench_sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <epoxy/gl.h>
+
+#include "fill_rate_floor.h"
+#include "nimbus/base/settings.h"
+#include "nimbus/media/block_partition.h"
+#include "nimbus/media/ecs/media_plugin.h"
+#include "nimbus/render/pass_timer.h"
+#include "nimbus/render/render_plugin.h"
+
+namespace nimbus::sandbox {
+namespace {
+
+// Every key a configuration may set; each is cleared before the next configuration.
+const char* const kSweptKeys[] = {"mode", "slices", "blocks", "impostor_scale", "instancing", "media_scale", "soft_particles"};
+
+bool isMediaPass(const std::string& name) {
+    return name == "light_slices" || name.rfind("media_", 0) == 0 || name.rfind("block_", 0) == 0;
+}
+
+void renderFrame(ecs::App& app) {
+    app.runPhase(ecs::phases::kPrepare);
+    app.runPhase(ecs::phases::kRender);
+    app.runPhase(ecs::phases::kPresent);
+}
+
+}  // namespace
+
+std::vector<BenchConfig> standardSweep(std::size_t particles) {
+    const int autoBlocks = media::automaticBlockCount(particles);
+    std::vector<BenchConfig> sweep;
+    auto add = [&](std::string name, std::vector<std::pair<std::string, std::string>> settings) {
+        sweep.push_back({std::move(name), std::move(settings)});
+    };
+    add("particles", {{"mode", "particles"}});
+    for (const char* slices : {"4", "8", "16", "32"}) add(std::string("particles slices=") + slices, {{"mode", "particles"}, {"slices", slices}});
+    add("particles media_scale=0.5", {{"mode", "particles"}, {"media_scale", "0.5"}});
+    add("particles media_scale=0.25", {{"mode", "particles"}, {"media_scale", "0.25"}});
+    add("blocks", {{"mode", "blocks"}});
+    for (const int blocks : {std::max(1, autoBlocks / 4), std::max(1, autoBlocks / 2), autoBlocks * 2, autoBlocks * 4}) {
+        if (blocks == autoBlocks || static_cast<std::size_t>(blocks) > particles) continue;
+        add("blocks blocks=" + std::to_string(blocks), {{"mode", "blocks"}, {"blocks", std::to_string(blocks)}});
+    }
+    add("blocks impostor_scale=0.25", {{"mode", "blocks"}, {"impostor_scale", "0.25"}});
+    add("blocks impostor_scale=1", {{"mode", "blocks"}, {"impostor_scale", "1"}});
+    add("blocks slices=8", {{"mode", "blocks"}, {"slices", "8"}});
+    add("blocks instancing", {{"mode", "blocks"}, {"instancing", "on"}});
+    add("blocks media_scale=0.5", {{"mode", "blocks"}, {"media_scale", "0.5"}});
+    return sweep;
+}
+
+std::vector<BenchResult> runSweep(Session& session, const std::vector<BenchConfig>& configs, int width, int height,
+                                  const assets::RgbImage& reference, const BenchTiming& timing,
+                                  const std::function<void(std::size_t)>& progress) {
+    ecs::App& app = session.app();
+    auto& settings = app.resource<Settings>();
+    auto& request = app.resource<render::RenderRequest>();
+    request.enabled = true;
+    request.settings.width = width;
+    request.settings.height = height;
+    FillRateFloor floor(width, height);
+    std::vector<BenchResult> results;
+    for (std::size_t c = 0; c < configs.size(); ++c) {
+        const BenchConfig& config = configs[c];
+        for (const char* key : kSweptKeys) settings.unset(key);
+        for (const auto& [key, value] : config.settings) settings.set(key, value, "bench");
+        BenchResult r;
+        r.config = config;
+        for (int i = 0; i < timing.warmup; ++i) renderFrame(app);
+
+        std::vector<double> frames;
+        for (int i = 0; i < timing.frames; ++i) {
+            glFinish();
+            const auto start = std::chrono::steady_clock::now();
+            renderFrame(app);
+            glFinish();
+            frames.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
+        r.frameMs = render::median(frames);
+
+        render::GlPassTimer timer(/*countFragments=*/true);
+        request.timer = &timer;
+        for (int i = 0; i < timing.frames; ++i) renderFrame(app);
+        request.timer = nullptr;
+        std::vector<double> fragmentsPerFrame(static_cast<std::size_t>(timing.frames), 0.0);
+        for (const auto& [pass, samples] : timer.samples()) {
+            r.passMs[pass] = render::median(samples);
+            if (!isMediaPass(pass)) continue;
+            r.mediaMs += r.passMs[pass];
+            const auto& counts = timer.fragments().at(pass);
+            for (std::size_t f = 0; f < counts.size() && f < fragmentsPerFrame.size(); ++f)
+                fragmentsPerFrame[f] += static_cast<double>(counts[f]);
+        }
+        r.mediaFragments = static_cast<std::uint64_t>(render::median(fragmentsPerFrame));
+        r.floorMs = r.mediaFragments > 0 ? floor.measure(r.mediaFragments) : 0.0;
+
+        const assets::RgbImage image = app.resource<render::RendererState>().renderer->readOutput();
+        r.error = media::reference::compareImages(image, reference);
+        if (const auto* state = app.world().tryResource<media::ecs::MediaRendererState>(); state && state->renderer) {
+            r.slices = state->renderer->stats().slices;
+            r.blocks = state->renderer->stats().blocks;
+        }
+        results.push_back(std::move(r));
+        if (progress) progress(c + 1);
+    }
+    for (const char* key : kSweptKeys) settings.unset(key);
+    markPareto(results);
+    return results;
+}
+
+void markPareto(std::vector<BenchResult>& results) {
+    for (auto& a : results) {
+        a.pareto = std::none_of(results.begin(), results.end(), [&](const BenchResult& b) {
+            const bool noWorse = b.frameMs <= a.frameMs && b.error.relRmse <= a.error.relRmse;
+            const bool better = b.frameMs < a.frameMs || b.error.relRmse < a.error.relRmse;
+            return &a != &b && noWorse && better;
+        });
+    }
+}
+
+}  // namespace nimbus::sandbox

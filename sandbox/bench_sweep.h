@@ -1,0 +1,51 @@
+#pragma once
+// What `sandbox bench` measures: a sweep over the settings that trade speed for error, each timed
+// (median of GPU-synchronised frames, per pass) and judged against one reference render.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "nimbus/assets/image_io.h"
+#include "nimbus/media/reference/image_metrics.h"
+#include "session.h"
+
+namespace nimbus::sandbox {
+
+struct BenchConfig {
+    std::string name;                                        // e.g. "blocks blocks=45"
+    std::vector<std::pair<std::string, std::string>> settings;  // applied with Settings::set
+};
+
+// The sweep for a scene with `particles` particles: modes, slice counts, block counts, impostor
+// resolution, instancing and media scale.
+std::vector<BenchConfig> standardSweep(std::size_t particles);
+
+struct BenchResult {
+    BenchConfig config;
+    double frameMs = 0.0;                  // median over the timed frames
+    std::map<std::string, double> passMs;  // per-pass medians (a separate, pass-synchronised run)
+    double mediaMs = 0.0;                  // sum of the media passes' medians
+    std::uint64_t mediaFragments = 0;      // fragments the media passes wrote (median frame)
+    double floorMs = 0.0;                  // the fill-rate floor for those fragments
+    media::reference::ImageMetrics error;
+    int slices = 0;
+    int blocks = 0;
+    bool pareto = false;                   // on the time/error Pareto front of its sweep
+};
+
+struct BenchTiming {
+    int frames = 20;  // timed frames per setting (DESIGN.md §6: at least 20)
+    int warmup = 3;
+};
+
+// Renders every configuration in `session` (GL context current) at width×height, against `reference`.
+std::vector<BenchResult> runSweep(Session& session, const std::vector<BenchConfig>& configs, int width, int height,
+                                  const assets::RgbImage& reference, const BenchTiming& timing,
+                                  const std::function<void(std::size_t)>& progress);
+
+// Marks the results no other result beats in both frame time and rel-RMSE.
+void markPareto(std::vector<BenchResult>& results);
+
+}  // namespace nimbus::sandbox
