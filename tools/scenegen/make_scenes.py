@@ -67,6 +67,29 @@ def cloud():
     return b
 
 
+def cumulus():
+    """Issue 5's benchmark cloud: 8000 particles (the seed's count) in a few merged cumulus blobs."""
+    import random
+    rng = random.Random(8000)
+    b = Builder()
+    b.environment(background=[0.32, 0.46, 0.74], ambient=[0.16, 0.19, 0.26])
+    ground = b.material("ground", (0.4, 0.46, 0.36))
+    b.node("ground", mesh=b.plane_mesh("ground", 60, 60, ground))
+    positions, sizes, densities = [], [], []
+    blobs = [((0, 9, 0), (6.0, 3.0, 4.5), 3400), ((-5, 8, 1), (3.5, 2.2, 3.0), 1600), ((5, 8.5, -1), (4.0, 2.5, 3.2), 1800),
+             ((1, 11.5, 0), (3.0, 2.0, 2.5), 1200)]
+    for centre, radii, count in blobs:
+        p, r, d = blob_cloud(rng, count, centre, radii, particle_radius=(0.45, 0.9))
+        positions += p
+        sizes += r
+        densities += d
+    b.node("cumulus", ext={"medium": {"extinction": 1.2, "albedo": [0.97, 0.97, 0.97], "g": 0.6},
+                           "particles": b.particles(positions, sizes, densities)})
+    b.sun("sun", direction=(-0.45, -0.55, -0.7), intensity=3.0)
+    b.camera("main", eye=(0, 7, 26), target=(0, 9, 0), yfov=0.75)
+    return b
+
+
 def smoke():
     """Issue 4: a smoke column beside a building that shadows part of it; the smoke shadows the ground."""
     b = Builder()
@@ -154,7 +177,7 @@ def explosion():
     return b
 
 
-SCENES = {"demo": demo, "cloud": cloud, "smoke": smoke, "campfire": campfire, "jet": jet, "explosion": explosion}
+SCENES = {"demo": demo, "cloud": cloud, "cumulus": cumulus, "smoke": smoke, "campfire": campfire, "jet": jet, "explosion": explosion}
 
 # Times at which the scenes are rendered for tests and the demo (emitters need time to fill).
 TIMES = {"smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8}
