@@ -10,3 +10,10 @@ struct GpuLightView {
 int lightViewIndex(int first, int count, vec3 lightPosition, vec3 p) {
     return count == 6 ? first + cubeFace(p - lightPosition) : first;
 }
+
+// Where p falls in a light view's texture: false when it lies behind the view or outside it.
+bool lightViewUv(GpuLightView v, vec3 p, out vec2 uv) {
+    vec4 clip = v.viewProjection * vec4(p, 1.0);
+    uv = clip.xy / max(clip.w, 1e-30) * 0.5 + 0.5;
+    return clip.w > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+}

@@ -17,10 +17,8 @@ float mediumOpticalDepth(int lightIndex, vec3 p) {
     int first = int(L.media.x);
     if (first < 0) return 0.0;
     GpuLightView v = transmittanceViews[lightViewIndex(first, int(L.media.y), L.position.xyz, p)];
-    vec4 clip = v.viewProjection * vec4(p, 1.0);
-    if (clip.w <= 0.0) return 0.0;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
+    vec2 uv;
+    if (!lightViewUv(v, p, uv)) return 0.0;  // slices cover the medium: outside them there is none
     float depth = -(v.view * vec4(p, 1.0)).z;
     int K = int(v.params.w);
     float s = (depth - v.params.y) / (v.params.z - v.params.y) * float(K);

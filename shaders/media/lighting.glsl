@@ -23,10 +23,8 @@ float mediumMeshVisibility(int lightIndex, vec3 p, float softness) {
     int first = int(L.spot.z);
     if (first < 0) return 1.0;
     GpuLightView v = shadowViews[lightViewIndex(first, int(L.spot.w), L.position.xyz, p)];
-    vec4 clip = v.viewProjection * vec4(p, 1.0);
-    if (clip.w <= 0.0) return 1.0;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+    vec2 uv;
+    if (!lightViewUv(v, p, uv)) return 1.0;  // outside the shadow map: nothing casts there
     float receiver = -(v.view * vec4(p, 1.0)).z;
     float texel = 1.0 / float(frame.counts.z);
     float width = max(softness, 1e-4) * 1.41421356;

@@ -38,17 +38,7 @@ render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std:
                 blocks.uploadTiles(plans[i].tiles);
                 impostors.render(plans[i], {.depths = r.id(d.impostors), .moments = r.id(d.moments)}, blocks, particles);
 
-                const int attachments = (v.slices + 3) / 4;
-                GLenum drawBuffers[8];
-                for (int a = 0; a < attachments; ++a) {
-                    glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), r.id(d.slices), 0,
-                                                   v.firstLayer + a);
-                    drawBuffers[a] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a);
-                }
-                glNamedFramebufferDrawBuffers(fbo.id(), attachments, drawBuffers);
-                glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-                const float zero[4] = {0, 0, 0, 0};
-                for (int a = 0; a < attachments; ++a) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, a, zero);
+                bindSliceLayers(fbo.id(), r.id(d.slices), v);
                 glViewport(0, 0, resolution, resolution);
                 glDisable(GL_DEPTH_TEST);
                 glDisable(GL_CULL_FACE);
@@ -71,8 +61,7 @@ render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std:
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(plans[i].tiles.size()));
                 glBindVertexArray(0);
                 glDisable(GL_BLEND);
-                for (int a = 0; a < attachments; ++a)
-                    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), 0, 0);
+                unbindSliceLayers(fbo.id(), v);
             }
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });

@@ -8,6 +8,24 @@
 
 namespace nimbus::media {
 
+void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view) {
+    const int attachments = (view.slices + 3) / 4;
+    GLenum drawBuffers[8];
+    for (int a = 0; a < attachments; ++a) {
+        glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), texture, 0, view.firstLayer + a);
+        drawBuffers[a] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a);
+    }
+    glNamedFramebufferDrawBuffers(framebuffer, attachments, drawBuffers);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    const float zero[4] = {0, 0, 0, 0};
+    for (int a = 0; a < attachments; ++a) glClearNamedFramebufferfv(framebuffer, GL_COLOR, a, zero);
+}
+
+void unbindSliceLayers(GLuint framebuffer, const SliceView& view) {
+    for (int a = 0; a < (view.slices + 3) / 4; ++a)
+        glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), 0, 0);
+}
+
 LightSlicePass::LightSlicePass() {
     program_ = gpu::compileProgram({.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag"});
 }
@@ -36,17 +54,7 @@ render::ResourceHandle LightSlicePass::add(render::FrameGraph& graph, const std:
             glBlendFunc(GL_ONE, GL_ONE);  // optical depth adds: no sort needed
             const GLuint program = program_.id();
             for (const auto& v : views) {
-                const int attachments = (v.slices + 3) / 4;
-                GLenum drawBuffers[8];
-                for (int a = 0; a < attachments; ++a) {
-                    glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), resources.id(d.slices), 0,
-                                                   v.firstLayer + a);
-                    drawBuffers[a] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a);
-                }
-                glNamedFramebufferDrawBuffers(fbo.id(), attachments, drawBuffers);
-                glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-                const float zero[4] = {0, 0, 0, 0};
-                for (int a = 0; a < attachments; ++a) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, a, zero);
+                bindSliceLayers(fbo.id(), resources.id(d.slices), v);
 
                 const glm::mat4 projection = v.view.viewProjection * glm::inverse(v.view.view);
                 const glm::mat4 inverseViewProjection = glm::inverse(v.view.viewProjection);
@@ -61,9 +69,7 @@ render::ResourceHandle LightSlicePass::add(render::FrameGraph& graph, const std:
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
                 glBindVertexArray(0);
-                // Detach so the next view's attachment count starts clean.
-                for (int a = 0; a < attachments; ++a)
-                    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), 0, 0);
+                unbindSliceLayers(fbo.id(), v);
             }
             glDisable(GL_BLEND);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -17,6 +17,12 @@ struct SliceView {
     int firstLayer = 0;
 };
 
+// Attaches the ceil(slices/4) layers of `view` in `texture` as draw buffers 0.. of `framebuffer`,
+// clears them to zero and binds the framebuffer (both slice passes render a view this way).
+void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view);
+// Detaches them again, so the next view's attachment count starts clean.
+void unbindSliceLayers(GLuint framebuffer, const SliceView& view);
+
 // Light slices (DESIGN.md §3 light-slice system): every slice view renders all particles once,
 // additively, into ceil(K/4) layers of one RGBA32F array.
 class LightSlicePass {
