@@ -35,10 +35,17 @@ SceneRenderer::SceneRenderer()
       opaquePass_(std::make_unique<OpaquePass>()),
       composePass_(std::make_unique<ComposePass>()) {}
 
-SceneRenderer::~SceneRenderer() = default;
+SceneRenderer::~SceneRenderer() {
+    if (previousFrame_ != nullptr) glDeleteSync(previousFrame_);
+}
 
 void SceneRenderer::render(const FrameInput& input, const RenderSettings& requested,
                            std::span<RenderExtension* const> extensions, PassTimer* timer) {
+    if (previousFrame_ != nullptr) {
+        glClientWaitSync(previousFrame_, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64{10'000'000'000});  // 10 s: a frame, not a hang
+        glDeleteSync(previousFrame_);
+        previousFrame_ = nullptr;
+    }
     const RenderSettings settings = withDefaults(requested);
     if (!output_ || output_.desc().width != settings.width || output_.desc().height != settings.height)
         output_ = gpu::Texture({GL_TEXTURE_2D, GL_RGBA32F, settings.width, settings.height, 1, 1});
@@ -64,6 +71,7 @@ void SceneRenderer::render(const FrameInput& input, const RenderSettings& reques
     graph.execute(timer);
     lastPasses_ = graph.activePasses();
     pool_.endFrame();
+    previousFrame_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
 }
 
 assets::RgbImage SceneRenderer::readOutput() const {

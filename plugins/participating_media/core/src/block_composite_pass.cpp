@@ -15,7 +15,7 @@ BlockCompositePass::BlockCompositePass() {
 }
 
 render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
-                                               const std::vector<std::uint32_t>& backToFront, BlockGpuBuffers& blocks,
+                                               const std::vector<std::uint32_t>& backToFront, const BlockGpuBuffers& blocks,
                                                const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors,
                                                const MediaTarget& target) {
     struct Impostors {
@@ -30,8 +30,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.sums2 = builder.create("block_impostor_sums2", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
         },
         [&plan, &blocks, &particles, &impostors](const render::PassResources& r, const Impostors& d) {
-            blocks.uploadTiles(plan.tiles);
-            impostors.render(plan, {.depths = r.id(d.depths), .sums1 = r.id(d.sums1), .sums2 = r.id(d.sums2)}, blocks, particles);
+            impostors.render(plan, 0, {.depths = r.id(d.depths), .sums1 = r.id(d.sums1), .sums2 = r.id(d.sums2)}, blocks, particles);
         });
 
     struct Composite {
@@ -49,10 +48,8 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.sums1 = builder.read(made.sums1);
             d.sums2 = builder.read(made.sums2);
         },
-        [this, &context, &plan, &backToFront, &blocks, w, h, scale = target.fullResScale](const render::PassResources& r,
+        [this, &context, &backToFront, &blocks, w, h, scale = target.fullResScale](const render::PassResources& r,
                                                                                             const Composite& d) {
-            blocks.uploadTiles(plan.tiles);
-            blocks.uploadDrawOrder(backToFront);
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
             glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
@@ -63,7 +60,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glUseProgram(program_.id());
             glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
             context.frameData->bind();
-            blocks.bind();
+            blocks.bind(0);
             glBindTextureUnit(render::kSceneDepthUnit, r.id(d.depth));
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, r.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, r.id(d.slices));

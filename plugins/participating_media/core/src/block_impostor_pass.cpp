@@ -97,9 +97,22 @@ void BlockGpuBuffers::uploadItems(const BlockPartition& partition, std::size_t o
     if (!items.empty()) glNamedBufferSubData(itemBuffer_.id(), 0, static_cast<GLsizeiptr>(items.size() * sizeof(glm::uvec2)), items.data());
 }
 
-void BlockGpuBuffers::uploadTiles(const std::vector<GpuBlockTile>& tiles) {
-    ensure(tileBuffer_, tileCapacity_, std::max<std::size_t>(tiles.size(), 1) * sizeof(GpuBlockTile));
-    if (!tiles.empty()) glNamedBufferSubData(tileBuffer_.id(), 0, static_cast<GLsizeiptr>(tiles.size() * sizeof(GpuBlockTile)), tiles.data());
+void BlockGpuBuffers::uploadTileSets(const std::vector<const BlockViewPlan*>& plans) {
+    GLint alignment = 256;
+    glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
+    const auto align = static_cast<std::size_t>(std::max(alignment, 1));
+    tileRanges_.clear();
+    std::size_t total = 0;
+    for (const BlockViewPlan* plan : plans) {
+        const std::size_t bytes = std::max<std::size_t>(plan->tiles.size(), 1) * sizeof(GpuBlockTile);
+        tileRanges_.emplace_back(total, bytes);
+        total += (bytes + align - 1) / align * align;
+    }
+    ensure(tileBuffer_, tileCapacity_, std::max<std::size_t>(total, 1));
+    for (std::size_t i = 0; i < plans.size(); ++i)
+        if (!plans[i]->tiles.empty())
+            glNamedBufferSubData(tileBuffer_.id(), static_cast<GLintptr>(tileRanges_[i].first),
+                                 static_cast<GLsizeiptr>(plans[i]->tiles.size() * sizeof(GpuBlockTile)), plans[i]->tiles.data());
 }
 
 void BlockGpuBuffers::uploadDrawOrder(const std::vector<std::uint32_t>& blocks) {
@@ -108,9 +121,11 @@ void BlockGpuBuffers::uploadDrawOrder(const std::vector<std::uint32_t>& blocks) 
         glNamedBufferSubData(orderBuffer_.id(), 0, static_cast<GLsizeiptr>(blocks.size() * sizeof(std::uint32_t)), blocks.data());
 }
 
-void BlockGpuBuffers::bind() const {
+void BlockGpuBuffers::bind(std::size_t tileSet) const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kImpostorItemsBinding, itemBuffer_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBlockTilesBinding, tileBuffer_.id());
+    const auto& [offset, bytes] = tileRanges_.at(tileSet);
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kBlockTilesBinding, tileBuffer_.id(), static_cast<GLintptr>(offset),
+                      static_cast<GLsizeiptr>(bytes));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDrawOrderBinding, orderBuffer_.id());
 }
 
@@ -118,8 +133,8 @@ BlockImpostorRenderer::BlockImpostorRenderer() {
     program_ = gpu::compileProgram({.vertex = "media/block_impostors.vert", .fragment = "media/block_impostors.frag"});
 }
 
-void BlockImpostorRenderer::render(const BlockViewPlan& plan, const ImpostorTargets& targets, const BlockGpuBuffers& blocks,
-                                   const ParticleGpuBuffer& particles) const {
+void BlockImpostorRenderer::render(const BlockViewPlan& plan, std::size_t tileSet, const ImpostorTargets& targets,
+                                   const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles) const {
     gpu::Framebuffer fbo = gpu::createFramebuffer();
     const GLuint textures[4] = {targets.depths, targets.sums1, targets.sums2, targets.moments};
     GLenum drawBuffers[4];
@@ -151,7 +166,7 @@ void BlockImpostorRenderer::render(const BlockViewPlan& plan, const ImpostorTarg
     const GLuint program = program_.id();
     glUseProgram(program);
     particles.bindParticles();
-    blocks.bind();
+    blocks.bind(tileSet);
     const glm::mat4 projection = plan.view.viewProjection * glm::inverse(plan.view.view);
     const glm::mat4 inverseViewProjection = glm::inverse(plan.view.viewProjection);
     const glm::vec4 params(plan.view.perspective ? 1.0f : 0.0f, plan.view.nearDepth, 0.0f, 0.0f);

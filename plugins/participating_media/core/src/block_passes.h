@@ -38,19 +38,24 @@ BlockViewPlan planInstancedBlockView(const BlockPartition& partition, std::size_
 // The block whose bounding radius is the median: a representative prototype.
 std::size_t choosePrototype(const BlockPartition& partition);
 
-// The frame's blocks on the GPU: (particle, block) pairs in block order, and a tiles buffer.
+// The frame's blocks on the GPU: (particle, block) pairs in block order, every view's tiles (one
+// range per view, all uploaded before the frame's first draw) and the camera's draw order.
+// Nothing is rewritten between draws: llvmpipe does not order a buffer update after queued draws
+// that read it (measured: with one tiles buffer rewritten per light view, the second light's
+// slices were wrong until a glFinish was added between views).
 class BlockGpuBuffers {
 public:
     void uploadItems(const BlockPartition& partition);
     void uploadItems(const BlockPartition& partition, std::size_t onlyBlock);  // instancing: the prototype's particles
-    void uploadTiles(const std::vector<GpuBlockTile>& tiles);
+    void uploadTileSets(const std::vector<const BlockViewPlan*>& plans);
     void uploadDrawOrder(const std::vector<std::uint32_t>& blocks);
-    void bind() const;
+    void bind(std::size_t tileSet) const;  // items, draw order and the tiles of one uploaded plan
     std::size_t itemCount() const { return items_; }
 
 private:
     gpu::Buffer itemBuffer_, tileBuffer_, orderBuffer_;
     std::size_t itemCapacity_ = 0, tileCapacity_ = 0, orderCapacity_ = 0, items_ = 0;
+    std::vector<std::pair<std::size_t, std::size_t>> tileRanges_;  // (byte offset, bytes) per tile set
 };
 
 // The atlas textures one impostor render writes (0: not written). depths (front, −back, τ) is
@@ -66,7 +71,7 @@ struct ImpostorTargets {
 class BlockImpostorRenderer {
 public:
     BlockImpostorRenderer();
-    void render(const BlockViewPlan& plan, const ImpostorTargets& targets, const BlockGpuBuffers& blocks,
+    void render(const BlockViewPlan& plan, std::size_t tileSet, const ImpostorTargets& targets, const BlockGpuBuffers& blocks,
                 const ParticleGpuBuffer& particles) const;
 
 private:
@@ -78,8 +83,9 @@ private:
 class BlockCompositePass {
 public:
     BlockCompositePass();
+    // The camera's plan is tile set 0 of `blocks`.
     render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
-                               const std::vector<std::uint32_t>& backToFront, BlockGpuBuffers& blocks,
+                               const std::vector<std::uint32_t>& backToFront, const BlockGpuBuffers& blocks,
                                const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors,
                                const MediaTarget& target);
 
@@ -92,8 +98,9 @@ private:
 class BlockSlicePass {
 public:
     BlockSlicePass();
+    // Light view i's plan is tile set i + 1 of `blocks`.
     render::ResourceHandle add(render::FrameGraph& graph, const std::vector<SliceView>& views,
-                               const std::vector<BlockViewPlan>& plans, int resolution, BlockGpuBuffers& blocks,
+                               const std::vector<BlockViewPlan>& plans, int resolution, const BlockGpuBuffers& blocks,
                                const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors);
 
 private:

@@ -12,31 +12,30 @@ BlockSlicePass::BlockSlicePass() {
 }
 
 render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std::vector<SliceView>& views,
-                                           const std::vector<BlockViewPlan>& plans, int resolution, BlockGpuBuffers& blocks,
+                                           const std::vector<BlockViewPlan>& plans, int resolution, const BlockGpuBuffers& blocks,
                                            const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors) {
     int layers = 0;
-    glm::ivec2 atlas(1);
-    for (std::size_t i = 0; i < views.size(); ++i) {
-        layers = std::max(layers, views[i].firstLayer + (views[i].slices + 3) / 4);
-        atlas = glm::max(atlas, plans[i].atlasSize);
-    }
+    for (std::size_t i = 0; i < views.size(); ++i) layers = std::max(layers, views[i].firstLayer + (views[i].slices + 3) / 4);
     struct Data {
-        render::ResourceHandle slices, impostors, moments;
+        render::ResourceHandle slices;
+        std::vector<render::ResourceHandle> impostors, moments;  // one atlas per view: none is rewritten while queued draws read it
     };
     const auto& data = graph.addPass<Data>(
         "light_slices",
         [&](render::PassBuilder& builder, Data& d) {
             d.slices = builder.create("light_slices", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1});
-            d.impostors = builder.create("block_light_impostors", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
-            d.moments = builder.create("block_light_moments", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
+            for (std::size_t i = 0; i < plans.size(); ++i) {
+                const glm::ivec2 size = plans[i].atlasSize;
+                d.impostors.push_back(builder.create("block_light_impostors_" + std::to_string(i), {GL_TEXTURE_2D, GL_RGBA32F, size.x, size.y, 1, 1}));
+                d.moments.push_back(builder.create("block_light_moments_" + std::to_string(i), {GL_TEXTURE_2D, GL_RGBA32F, size.x, size.y, 1, 1}));
+            }
         },
         [this, views, &plans, resolution, &blocks, &particles, &impostors](const render::PassResources& r, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             const GLuint program = program_.id();
             for (std::size_t i = 0; i < views.size(); ++i) {
                 const SliceView& v = views[i];
-                blocks.uploadTiles(plans[i].tiles);
-                impostors.render(plans[i], {.depths = r.id(d.impostors), .moments = r.id(d.moments)}, blocks, particles);
+                impostors.render(plans[i], i + 1, {.depths = r.id(d.impostors[i]), .moments = r.id(d.moments[i])}, blocks, particles);
 
                 bindSliceLayers(fbo.id(), r.id(d.slices), v);
                 glViewport(0, 0, resolution, resolution);
@@ -46,9 +45,9 @@ render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std:
                 glBlendEquation(GL_FUNC_ADD);
                 glBlendFunc(GL_ONE, GL_ONE);
                 glUseProgram(program);
-                blocks.bind();
-                glBindTextureUnit(5, r.id(d.impostors));
-                glBindTextureUnit(6, r.id(d.moments));
+                blocks.bind(i + 1);
+                glBindTextureUnit(5, r.id(d.impostors[i]));
+                glBindTextureUnit(6, r.id(d.moments[i]));
                 const glm::mat4 inverseViewProjection = glm::inverse(v.view.viewProjection);
                 const glm::vec4 params(v.view.perspective ? 1.0f : 0.0f, v.view.depthNear, v.view.depthFar, static_cast<float>(v.slices));
                 const glm::vec2 size(static_cast<float>(resolution));

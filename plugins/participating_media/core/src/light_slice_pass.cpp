@@ -1,5 +1,7 @@
 // Light slices: optical depth from each light up to K planes across the medium, exact at the
 // planes (shaders/media/light_slices.*). The opaque pass and the media pass read them as T = e^−τ.
+#include <algorithm>
+
 #include "media_passes.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -9,8 +11,8 @@
 namespace nimbus::media {
 
 void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view) {
-    const int attachments = (view.slices + 3) / 4;
-    GLenum drawBuffers[8];
+    const int attachments = std::min((view.slices + 3) / 4, 8);
+    GLenum drawBuffers[8] = {GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE};
     for (int a = 0; a < attachments; ++a) {
         glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), texture, 0, view.firstLayer + a);
         drawBuffers[a] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a);

@@ -80,9 +80,18 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
         "media_upload", [](render::PassBuilder& builder, Upload&) { builder.sideEffect(); },
         [this, &context, blocks](const render::PassResources&, const Upload&) {
             buffer_->upload(*particles_, context.view.origin);
-            if (blocks && blockFrame_->instanced) blockBuffers_->uploadItems(blockFrame_->partition, blockFrame_->prototype);
-            else if (blocks) blockBuffers_->uploadItems(blockFrame_->partition);
-            else buffer_->sortBackToFront(*particles_, context.view);
+            if (!blocks) {
+                buffer_->sortBackToFront(*particles_, context.view);
+                return;
+            }
+            // Everything blocks mode draws from this frame, uploaded before its first draw.
+            BlockFrame& frame = *blockFrame_;
+            if (frame.instanced) blockBuffers_->uploadItems(frame.partition, frame.prototype);
+            else blockBuffers_->uploadItems(frame.partition);
+            std::vector<const BlockViewPlan*> plans{&frame.cameraPlan};
+            for (const BlockViewPlan& plan : frame.lightPlans) plans.push_back(&plan);
+            blockBuffers_->uploadTileSets(plans);
+            blockBuffers_->uploadDrawOrder(frame.backToFront);
         });
 
     const int resolution = settings_.sliceResolution > 0 ? settings_.sliceResolution : 256;

@@ -91,6 +91,10 @@ private:
     TexturePool pool_;
     gpu::Texture output_;
     std::vector<std::string> lastPasses_;
+    // The previous frame's completion. Buffers are rewritten every frame (no ring), and llvmpipe
+    // does not order a buffer update after queued draws that read it, so a frame waits for the
+    // last one before touching them.
+    GLsync previousFrame_ = nullptr;
 };
 
 // World bounds of the instances' meshes.
