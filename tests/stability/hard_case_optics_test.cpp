@@ -1,0 +1,183 @@
+// Hard cases of the optics (issue "Speed against error ... and the hard cases"): optical depths far
+// from 1, light along, against and across the view, a spot light inside the medium, and phase
+// asymmetry g = ±0.99. Each case is a scene in tests/data/stability_scenes (written by
+// generate_stability_scenes.py) and says what could go wrong and which code prevents it.
+//
+// Every case asserts (stability_harness.h): no NaN/Inf pixel in the reference or in either mode, no
+// GL error, the reference converged (halving its tolerance changes it by < 1e-3 rel-RMSE), two
+// frames of the same state identical, and each mode's rel-RMSE against the reference within the
+// stated bound (15% unless the comment argues otherwise). Measured values: 160×90, llvmpipe.
+#include <gtest/gtest.h>
+
+#include "stability_harness.h"
+
+namespace nimbus::stability {
+namespace {
+
+using media::MediaMode;
+
+// ── Optical depth ~1e4: transmittance underflow ──────────────────────────────────────────────
+// A cloud whose densest column has τ ≈ 1e4 (σ ≈ 5e3 /m), over a ground, in the sun.
+// What could go wrong: e^−τ underflows to 0, so anything that divides by a transmittance, takes
+// its log, or normalises by it gives Inf/NaN; 1 − e^−τ must be exactly 1, not 1 + rounding; a
+// shading point placed by inverting the kernel's cumulative depth (erfinv at ±1) is −inf; block
+// sums weighted by τ (τ·t, τ·albedo) could overflow; light slices holding τ ~ 1e4 must still
+// interpolate to a finite e^−τ.
+// What prevents it:
+//   reference: optics.h transmittance() (0 for huge τ, never NaN) and opacity() (−expm1);
+//     light_transport.cpp LightTransport::transmittanceToLight (τ ≥ 64 counts as opaque); the
+//     quadrature works in v = 1 − e^−τ (medium_quadrature.cpp MediumQuadrature::integrate), so
+//     an opaque cluster is a finite interval of v and nothing behind it is evaluated.
+//   real time: shaders/common/math.glsl oneMinusExpNeg; shaders/media/optics.glsl
+//     chordShadingPoint (fraction → 1/τ, never 0/0) and erfInverse (argument clamped to
+//     ±0.9999999, no log(0)); lighting.glsl scatteredLight (exp(−τ) of the slice value, 0 not
+//     NaN); block_composite.frag divides the sums by τ only where τ > 0.
+// Bound: 15%. Measured: particles 2.4%, blocks 8.2%.
+const HardCase kOpticalDepth1e4{.name = "optical_depth_1e4", .scene = "optical_depth_1e4.gltf"};
+
+TEST_F(StabilityTest, OpticalDepth1e4StaysFinite) { expectFiniteAndClean(kOpticalDepth1e4, runCase(context(), kOpticalDepth1e4)); }
+TEST_F(StabilityTest, OpticalDepth1e4WithinBound) {
+    const CaseRun& run = runCase(context(), kOpticalDepth1e4);
+    expectWithinBound(kOpticalDepth1e4, run, MediaMode::Particles, kDefaultErrorBound);
+    expectWithinBound(kOpticalDepth1e4, run, MediaMode::Blocks, kDefaultErrorBound);
+}
+
+// ── Optical depth ~1e-5: cancellation ────────────────────────────────────────────────────────
+// The same kind of cloud with the densest column at τ ≈ 1e-5, on a black background with no
+// ambient and no mesh: the medium's in-scattering is the whole image, so a relative error of the
+// medium is the image's relative error.
+// What could go wrong: 1 − e^−τ computed as 1 − exp(−τ) in float keeps ~1e-7 absolute, i.e. 1%
+// of τ = 1e-5 and all of τ < 1e-7 (the thin rim of every particle); erf(b) − erf(a) of a short
+// chord cancels; the reference's quadrature floor could stop it before it resolves so faint a
+// medium.
+// What prevents it: optics.h opacity() uses expm1; optics.cpp gaussianIntegralWidth integrates
+// short intervals by Gauss–Legendre instead of subtracting erfs; shaders/common/math.glsl
+// oneMinusExpNeg switches to its Taylor series below 1e-3; the reference floor is relative to the
+// scene's radiance scale (reference_renderer.h), and its self-change is asserted.
+// Bound: 15%. Measured: particles 0.0002%, blocks 14% — blocks mode's error here is its impostor
+// resolution (impostor_scale 0.5: silhouettes blurred over ~2 px; 0.85% at impostor_scale 2), not
+// cancellation, and shows this clearly only because nothing but the medium is in the image.
+const HardCase kOpticalDepth1e5{.name = "optical_depth_1e-5", .scene = "optical_depth_1e-5.gltf"};
+
+TEST_F(StabilityTest, OpticalDepth1eMinus5StaysFinite) { expectFiniteAndClean(kOpticalDepth1e5, runCase(context(), kOpticalDepth1e5)); }
+TEST_F(StabilityTest, OpticalDepth1eMinus5WithinBound) {
+    const CaseRun& run = runCase(context(), kOpticalDepth1e5);
+    expectWithinBound(kOpticalDepth1e5, run, MediaMode::Particles, kDefaultErrorBound);
+    expectWithinBound(kOpticalDepth1e5, run, MediaMode::Blocks, kDefaultErrorBound);
+}
+
+// ── Light parallel, antiparallel and perpendicular to the view ───────────────────────────────
+// The sun shines straight down (−Y). Camera "parallel" looks straight down (the light comes from
+// behind the eye), "antiparallel" straight up into the sun (everything seen is lit through the
+// cloud), "perpendicular" horizontally. g = 0.6.
+// What could go wrong: a light view built with the world up (0, 1, 0) as its up hint is
+// degenerate for a light along ±Y (cross product 0 → NaN matrices, every slice lookup NaN); a
+// camera looking along ±Y is degenerate for the same reason; billboards oriented with a helper
+// axis parallel to the eye axis collapse; cos θ = ±1 exactly puts the Henyey–Greenstein
+// denominator at its minimum (1 − |g|)².
+// What prevents it: engine/render/src/light_views.cpp lookAlong (replaces an up hint within
+// 0.99 of the axis); cameras come from the node's rotation, not a look-at (assets
+// resolveCamera); shaders/media/particles.vert picks the billboard helper axis by |axis.y|;
+// shaders/media/optics.glsl henyeyGreenstein clamps its denominator at 1e-8.
+// Bound: 15% each. Measured: parallel particles 0.35%, blocks 0.72%; antiparallel particles
+// 1.9%, blocks 14.7%; perpendicular particles 1.7%, blocks 2.8% (blocks with llvmpipe pinned to
+// one thread; see realtime_repeatability_test.cpp).
+const HardCase kLightParallel{.name = "light_parallel", .scene = "light_directions.gltf", .camera = "parallel"};
+const HardCase kLightAntiparallel{.name = "light_antiparallel", .scene = "light_directions.gltf", .camera = "antiparallel"};
+const HardCase kLightPerpendicular{.name = "light_perpendicular", .scene = "light_directions.gltf", .camera = "perpendicular"};
+
+TEST_F(StabilityTest, LightParallelToViewStaysFinite) { expectFiniteAndClean(kLightParallel, runCase(context(), kLightParallel)); }
+TEST_F(StabilityTest, LightParallelToViewWithinBound) {
+    const CaseRun& run = runCase(context(), kLightParallel);
+    expectWithinBound(kLightParallel, run, MediaMode::Particles, kDefaultErrorBound);
+    expectWithinBound(kLightParallel, run, MediaMode::Blocks, kDefaultErrorBound);
+}
+TEST_F(StabilityTest, LightAntiparallelToViewStaysFinite) {
+    expectFiniteAndClean(kLightAntiparallel, runCase(context(), kLightAntiparallel));
+}
+TEST_F(StabilityTest, LightAntiparallelToViewWithinBound) {
+    const CaseRun& run = runCase(context(), kLightAntiparallel);
+    expectWithinBound(kLightAntiparallel, run, MediaMode::Particles, kDefaultErrorBound);
+    expectWithinBound(kLightAntiparallel, run, MediaMode::Blocks, kDefaultErrorBound);
+}
+TEST_F(StabilityTest, LightPerpendicularToViewStaysFinite) {
+    expectFiniteAndClean(kLightPerpendicular, runCase(context(), kLightPerpendicular));
+}
+TEST_F(StabilityTest, LightPerpendicularToViewWithinBound) {
+    const CaseRun& run = runCase(context(), kLightPerpendicular);
+    expectWithinBound(kLightPerpendicular, run, MediaMode::Particles, kDefaultErrorBound);
+    expectWithinBound(kLightPerpendicular, run, MediaMode::Blocks, kDefaultErrorBound);
+}
+
+// ── A spot light inside the cloud ────────────────────────────────────────────────────────────
+// A spot light at the middle of a cloud (σ 0.8 /m, particles R 0.5–1 m around it), shining down
+// and sideways onto the ground; the camera sees the light's position.
+// What could go wrong: E = I/d² is singular at the light, and camera rays pass within
+// centimetres of it (the exact in-scattering there is finite only because ∫ du/(b² + u²) = π/b);
+// light views are perspective from inside particle spheres (a tangent-cone billboard needs
+// sqrt(d² − R²) < 0); the light's own position is inside particles, so "the part of the particle
+// in front of the light" has to be clipped; at d = 0 the direction to the light is undefined.
+// What prevents it: shaders/media/light_slices.vert covers the whole view when the light is inside
+// or at a sphere; light_slices.frag starts perspective light rays at the light
+// (start = max(−h, −t_closest)); shaders/media/lighting.glsl kernelMeanInverseSquare averages 1/d²
+// over the kernel with u = u_l + b·tan φ (b ≥ 1e-4 R) instead of sampling the spike;
+// shaders/common/lights.glsl sampleLight and assets light_model.cpp sampleLight return zero
+// irradiance within 1e-9 m of the light; light_views.cpp perspectiveView keeps znear > 0.
+// The reference's value near the light was checked independently (a 40000-point integral in the
+// tan-substitution of one pixel's ray: 2.021 + 0.016 ambient against the reference's 2.037).
+// Bound: 15%. Measured: particles 178%, blocks 114% — beyond the bound, see the DISABLED_ test.
+const HardCase kSpotInCloud{.name = "spot_in_cloud", .scene = "spot_in_cloud.gltf"};
+
+TEST_F(StabilityTest, SpotLightInsideCloudStaysFinite) { expectFiniteAndClean(kSpotInCloud, runCase(context(), kSpotInCloud)); }
+// DISABLED (finding for the media core): pixels whose rays pass near the spot light are 2–3×
+// too bright in particles mode (pixel (46, 21) at 96×54: 5.76 against 2.04) and near-background in
+// blocks mode (0.016). lighting.glsl segmentSource averages only 1/d² over the kernel
+// (kernelMeanInverseSquare) but takes the spot cone a², the phase p(θ) and T_l at the single
+// nearest point `at`; near the apex a² and p vary along the ray as fast as 1/d² (a ray passing the
+// apex is inside the cone for ~2·outer/π of the φ range), so they belong inside the φ integral.
+// Blocks mode shades a whole block at one point (block_composite.frag mediumSource), which misses
+// the 1/d peak altogether.
+TEST_F(StabilityTest, DISABLED_SpotLightInsideCloudWithinBound) {
+    const CaseRun& run = runCase(context(), kSpotInCloud);
+    expectWithinBound(kSpotInCloud, run, MediaMode::Particles, kDefaultErrorBound);
+    expectWithinBound(kSpotInCloud, run, MediaMode::Blocks, kDefaultErrorBound);
+}
+
+// ── g = ±0.99 ────────────────────────────────────────────────────────────────────────────────
+// Two clouds, g = +0.99 (left) and g = −0.99 (right), under a low sun; camera "towards_sun" looks
+// into it (forward peak), "away_from_sun" has the sun behind it (the antisolar point, where the
+// g = −0.99 phase function peaks at p = 1584 /sr, is in view).
+// What could go wrong: 1 + g² − 2g cos θ = (1 − |g|)² = 1e-4 at the peak loses digits in float
+// and would be 0 (Inf phase) for |g| → 1; a τ-weighted mean g of a block could leave (−1, 1); any
+// radiance error near the peak is multiplied by ~1600.
+// What prevents it: optics.h / optics.glsl henyeyGreenstein (denominator clamped at 1e-8 in GLSL;
+// the parser refuses |g| ≥ 1); block_composite.frag clamps a block's g to ±0.999; the phase is
+// evaluated per pixel ray in both modes, so the peak sits at the same pixels as in the reference.
+// Bound: 15%. Measured: towards_sun particles 0.53%, blocks 4.6%; away_from_sun particles 2.4%,
+// blocks 122% — beyond the bound, see the DISABLED_ test.
+const HardCase kPhaseTowardsSun{.name = "phase_towards_sun", .scene = "phase_extremes.gltf", .camera = "towards_sun"};
+const HardCase kPhaseAwayFromSun{.name = "phase_away_from_sun", .scene = "phase_extremes.gltf", .camera = "away_from_sun"};
+
+TEST_F(StabilityTest, PhaseG099TowardsSunStaysFinite) { expectFiniteAndClean(kPhaseTowardsSun, runCase(context(), kPhaseTowardsSun)); }
+TEST_F(StabilityTest, PhaseG099TowardsSunWithinBound) {
+    const CaseRun& run = runCase(context(), kPhaseTowardsSun);
+    expectWithinBound(kPhaseTowardsSun, run, MediaMode::Particles, kDefaultErrorBound);
+    expectWithinBound(kPhaseTowardsSun, run, MediaMode::Blocks, kDefaultErrorBound);
+}
+TEST_F(StabilityTest, PhaseG099AwayFromSunStaysFinite) {
+    expectFiniteAndClean(kPhaseAwayFromSun, runCase(context(), kPhaseAwayFromSun));
+}
+TEST_F(StabilityTest, PhaseG099AwayFromSunParticlesWithinBound) {
+    expectWithinBound(kPhaseAwayFromSun, runCase(context(), kPhaseAwayFromSun), MediaMode::Particles, kDefaultErrorBound);
+}
+// DISABLED (finding for blocks mode): at the antisolar point the g = −0.99 source is ~4300 per
+// unit optical depth, and the block impostor's bilinear optical depth leaks about one impostor
+// texel (≈ 2 px at impostor_scale 0.5) beyond the cloud's silhouette: pixel (52, 33) at 96×54
+// shows 2.49 where the ray misses the cloud (reference 0.02 = background). impostor_scale 2 / 4
+// bring it to 13% / 10.5% (block_impostor_pass.cpp tile resolution, block_data.glsl readImpostor).
+TEST_F(StabilityTest, DISABLED_PhaseG099AwayFromSunBlocksWithinBound) {
+    expectWithinBound(kPhaseAwayFromSun, runCase(context(), kPhaseAwayFromSun), MediaMode::Blocks, kDefaultErrorBound);
+}
+
+}  // namespace
+}  // namespace nimbus::stability

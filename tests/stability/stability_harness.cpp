@@ -1,0 +1,146 @@
+#include "stability_harness.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+
+#include "nimbus/base/settings.h"
+#include "nimbus/media/ecs/media_plugin.h"
+#include "nimbus/media/reference/reference_renderer.h"
+
+namespace nimbus::stability {
+
+namespace reference = media::reference;
+
+std::filesystem::path sceneDirectory() { return std::filesystem::path(NIMBUS_TEST_DATA_DIR) / "stability_scenes"; }
+
+std::size_t countNonfinite(const assets::RgbImage& image) {
+    std::size_t count = 0;
+    for (std::size_t p = 0; p < image.pixelCount(); ++p) {
+        const float* v = &image.rgb[3 * p];
+        if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) ++count;
+    }
+    return count;
+}
+
+assets::RgbImage renderReference(sandbox::Session& session, const std::string& camera, int width, int height,
+                                 double tolerance) {
+    const auto scene = sandbox::makeReferenceScene(session, camera, width, height);
+    reference::ReferenceSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.tolerance = tolerance;
+    settings.progress = false;
+    return reference::renderReference(scene->inputs, settings);
+}
+
+assets::RgbImage renderMode(sandbox::Session& session, media::MediaMode mode, int width, int height,
+                            const std::string& camera) {
+    session.app().resource<Settings>().set("mode", media::mediaModeName(mode), "stability test");
+    return session.renderRealtime(width, height, camera);
+}
+
+media::MediaFrameStats mediaStats(sandbox::Session& session) {
+    const auto* state = session.app().world().tryResource<media::ecs::MediaRendererState>();
+    return state != nullptr && state->renderer ? state->renderer->stats() : media::MediaFrameStats{};
+}
+
+ModeRun runMode(gpu::Context& context, sandbox::Session& session, const HardCase& c, media::MediaMode mode,
+                const assets::RgbImage& referenceImage) {
+    ModeRun run;
+    run.mode = mode;
+    (void)context.takeGlErrors();
+    run.image = renderMode(session, mode, c.width, c.height, c.camera);
+    const assets::RgbImage second = renderMode(session, mode, c.width, c.height, c.camera);
+    run.glErrors = context.takeGlErrors();
+    run.stats = mediaStats(session);
+    run.nonfinite = countNonfinite(run.image);
+    run.repeatNonfinite = countNonfinite(second);
+    run.error = reference::compareImages(run.image, referenceImage);
+    run.repeatChange = reference::compareImages(second, run.image).relRmse;
+    return run;
+}
+
+namespace {
+
+void dump(const HardCase& c, const char* what, const assets::RgbImage& image) {
+    const char* folder = std::getenv("NIMBUS_STABILITY_DUMP");
+    if (folder == nullptr || *folder == '\0') return;
+    std::filesystem::create_directories(folder);
+    assets::writeImage(std::filesystem::path(folder) / (c.name + "_" + what + ".exr"), image);
+}
+
+}  // namespace
+
+const CaseRun& runCase(gpu::Context& context, const HardCase& c) {
+    static std::map<std::string, std::unique_ptr<CaseRun>> memo;
+    if (auto it = memo.find(c.name); it != memo.end()) return *it->second;
+    auto run = std::make_unique<CaseRun>();
+
+    const std::filesystem::path scene = c.scene.is_absolute() ? c.scene : sceneDirectory() / c.scene;
+    sandbox::Session session({scene, c.time, c.settings});
+    run->reference = renderReference(session, c.camera, c.width, c.height);
+    const assets::RgbImage half = renderReference(session, c.camera, c.width, c.height, 0.5 * kReferenceTolerance);
+    run->referenceNonfinite = countNonfinite(run->reference);
+    run->referenceHalfNonfinite = countNonfinite(half);
+    run->referenceSelfChange = reference::compareImages(half, run->reference).relRmse;
+    run->particles = runMode(context, session, c, media::MediaMode::Particles, run->reference);
+    run->blocks = runMode(context, session, c, media::MediaMode::Blocks, run->reference);
+    run->particleCount = run->particles.stats.particles;
+
+    std::printf("[stability] %-34s %7zu particles  rel_rmse particles %.4g  blocks %.4g  (reference self-change %.2g; "
+                "repeat %.2g / %.2g)\n",
+                c.name.c_str(), run->particleCount, run->particles.error.relRmse, run->blocks.error.relRmse,
+                run->referenceSelfChange, run->particles.repeatChange, run->blocks.repeatChange);
+    ::testing::Test::RecordProperty("rel_rmse_particles", std::to_string(run->particles.error.relRmse));
+    ::testing::Test::RecordProperty("rel_rmse_blocks", std::to_string(run->blocks.error.relRmse));
+    dump(c, "reference", run->reference);
+    dump(c, "particles", run->particles.image);
+    dump(c, "blocks", run->blocks.image);
+    return *memo.emplace(c.name, std::move(run)).first->second;
+}
+
+std::size_t residentBytes() {
+    std::ifstream statm("/proc/self/statm");
+    std::size_t size = 0, resident = 0;
+    statm >> size >> resident;
+    return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
+
+std::unique_ptr<gpu::Context> createContext(bool oneRasterizerThread) {
+    if (oneRasterizerThread) setenv("LP_NUM_THREADS", "0", /*overwrite=*/0);
+    return gpu::Context::create({.debug = gpu::ContextDesc::Debug::On});
+}
+
+void StabilityTest::SetUp() {
+    context_->makeCurrent();
+    (void)context_->takeGlErrors();
+}
+
+void expectFiniteAndClean(const HardCase& c, const CaseRun& run) {
+    SCOPED_TRACE(c.name);
+    EXPECT_EQ(run.referenceNonfinite, 0u) << "reference has non-finite pixels";
+    EXPECT_EQ(run.referenceHalfNonfinite, 0u) << "reference at half tolerance has non-finite pixels";
+    EXPECT_LT(run.referenceSelfChange, kReferenceSelfChangeBound) << "the reference is not converged";
+    for (const ModeRun* m : {&run.particles, &run.blocks}) {
+        const char* mode = media::mediaModeName(m->mode);
+        EXPECT_EQ(m->nonfinite, 0u) << mode << ": non-finite pixels";
+        EXPECT_EQ(m->repeatNonfinite, 0u) << mode << ": non-finite pixels in the second frame";
+        EXPECT_EQ(m->glErrors.count, 0u) << mode << ": GL error: " << m->glErrors.first;
+        EXPECT_LE(m->repeatChange, 1e-6) << mode << ": a second frame of the same state differs";
+        EXPECT_EQ(m->stats.particles, run.particleCount) << mode << ": drew a different particle count";
+    }
+}
+
+void expectWithinBound(const HardCase& c, const CaseRun& run, media::MediaMode mode, double bound) {
+    const ModeRun& m = run.mode(mode);
+    EXPECT_LE(m.error.relRmse, bound) << c.name << ", " << media::mediaModeName(mode) << ": rel-RMSE against the reference "
+                                      << m.error.relRmse << " (p99 |diff| " << m.error.p99Abs << ")";
+    EXPECT_EQ(m.error.comparedPixels, run.reference.pixelCount()) << c.name << ": some pixels were not comparable";
+}
+
+}  // namespace nimbus::stability
