@@ -16,23 +16,29 @@ struct LightSample {
     vec3 irradiance;  // on a surface facing the light, before any visibility
 };
 
-LightSample sampleLight(int index, vec3 p) {
+// The point/spot light's falloff at p apart from 1/d²: the range window times the spot cone.
+float lightShape(int index, vec3 p) {
     GpuLight L = lights[index];
-    int type = int(L.direction.w + 0.5);
-    if (type == 0) return LightSample(-L.direction.xyz, 1e30, L.radiance.rgb);
     vec3 d = L.position.xyz - p;
     float dist = length(d);
-    if (dist < 1e-9) return LightSample(vec3(0.0, 1.0, 0.0), dist, vec3(0.0));
-    vec3 l = d / dist;
-    float attenuation = 1.0 / (dist * dist);
+    float shape = 1.0;
     if (L.position.w > 0.0) {
         float r = dist / L.position.w;
         float window = clamp(1.0 - r * r * r * r, 0.0, 1.0);
-        attenuation *= window * window;
+        shape *= window * window;
     }
-    if (type == 2) {
-        float a = clamp(dot(L.direction.xyz, -l) * L.spot.x + L.spot.y, 0.0, 1.0);
-        attenuation *= a * a;
+    if (int(L.direction.w + 0.5) == 2 && dist > 0.0) {
+        float a = clamp(dot(L.direction.xyz, -d / dist) * L.spot.x + L.spot.y, 0.0, 1.0);
+        shape *= a * a;
     }
-    return LightSample(l, dist, L.radiance.rgb * attenuation);
+    return shape;
+}
+
+LightSample sampleLight(int index, vec3 p) {
+    GpuLight L = lights[index];
+    if (int(L.direction.w + 0.5) == 0) return LightSample(-L.direction.xyz, 1e30, L.radiance.rgb);
+    vec3 d = L.position.xyz - p;
+    float dist = length(d);
+    if (dist < 1e-9) return LightSample(vec3(0.0, 1.0, 0.0), dist, vec3(0.0));
+    return LightSample(d / dist, dist, L.radiance.rgb * (lightShape(index, p) / (dist * dist)));
 }

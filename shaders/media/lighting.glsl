@@ -40,11 +40,12 @@ float mediumMeshVisibility(int lightIndex, vec3 p, float softness) {
 }
 
 // Light i scattered towards the camera at p, per unit optical depth and albedo: p(θ) E V T.
-// `inverseSquare` > 0 replaces the point/spot light's 1/d² at p (see kernelMeanInverseSquare).
-vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float inverseSquare) {
+// `attenuation` ≥ 0 replaces the point/spot light's falloff (shape / d²) at p with a value averaged
+// over the particle (see kernelMeanAttenuation); < 0 keeps sampleLight's.
+vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float attenuation) {
     LightSample s = sampleLight(i, p);
-    if (all(lessThanEqual(s.irradiance, vec3(0.0)))) return vec3(0.0);
-    vec3 irradiance = inverseSquare > 0.0 ? s.irradiance * (s.distance * s.distance * inverseSquare) : s.irradiance;
+    vec3 irradiance = attenuation >= 0.0 ? lights[i].radiance.rgb * attenuation : s.irradiance;
+    if (all(lessThanEqual(irradiance, vec3(0.0)))) return vec3(0.0);
     // θ between the light's travel direction (−toLight) and the direction to the camera (−viewDir).
     float phase = phaseValue(particle.extra.x, particle.emissionG.w, dot(s.toLight, viewDir));
     float visibility = mediumMeshVisibility(i, p, particle.positionRadius.w / 3.0);
@@ -56,16 +57,17 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float inv
 // albedo · (Σ p E V T + L_amb) + emission.
 vec3 mediumSource(vec3 p, vec3 viewDir, GpuParticle particle) {
     vec3 scattered = frame.ambient.rgb;
-    for (int i = 0; i < frame.counts.x; ++i) scattered += scatteredLight(i, p, viewDir, particle, 0.0);
+    for (int i = 0; i < frame.counts.x; ++i) scattered += scatteredLight(i, p, viewDir, particle, -1.0);
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 }
 
-// The kernel-weighted mean of 1/d² from a light at `light` along the segment [lo, hi] (u measured
-// from the chord's closest point). Near a point light 1/d² peaks far more sharply than the kernel
-// varies, so one sample is badly wrong; with u = u_l + b·tan φ the integral ∫ρ/d² du becomes
-// (1/b)∫ρ dφ, smooth in φ, which six Gauss–Legendre points integrate well.
-float kernelMeanInverseSquare(vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, vec3 light) {
-    vec3 toLight = light - origin;
+// The kernel-weighted mean, over the segment [lo, hi] (u from the chord's closest point), of a
+// point/spot light's falloff shape(x)/d², and the u where that falloff is centred. Near the light
+// 1/d² peaks far more sharply than the kernel varies, so one sample is badly wrong; with
+// u = u_l + b·tan φ the integral ∫ρ·shape/d² du becomes (1/b)∫ρ·shape dφ, smooth in φ (the spot
+// cone and range window included, per node), which six Gauss–Legendre points integrate well.
+vec2 kernelMeanAttenuation(vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, int light) {
+    vec3 toLight = lights[light].position.xyz - origin;
     float tLight = dot(toLight, dir);
     float b = max(length(toLight - tLight * dir), 1e-4 * radius);
     float uLight = tLight - c.tClosest;
@@ -73,35 +75,43 @@ float kernelMeanInverseSquare(vec3 origin, vec3 dir, Chord c, float radius, floa
     float k = KERNEL_FALLOFF / (radius * radius);
     const float nodes[3] = float[](0.2386191861, 0.6612093865, 0.9324695142);
     const float weights[3] = float[](0.4679139346, 0.3607615730, 0.1713244924);
-    float mid = 0.5 * (phi0 + phi1), half_ = 0.5 * (phi1 - phi0), sum = 0.0;
+    float mid = 0.5 * (phi0 + phi1), half_ = 0.5 * (phi1 - phi0), sum = 0.0, weightedU = 0.0;
     for (int j = 0; j < 3; ++j) {
         for (int sgn = -1; sgn <= 1; sgn += 2) {
             float u = uLight + b * tan(mid + float(sgn) * half_ * nodes[j]);
-            sum += weights[j] * exp(-k * u * u);
+            float w = weights[j] * exp(-k * u * u) * lightShape(light, origin + dir * (c.tClosest + u));
+            sum += w;
+            weightedU += w * u;
         }
     }
-    float sk = sqrt(k);
-    float mass = (HALF_SQRT_PI / sk) * (erfApprox(sk * hi) - erfApprox(sk * lo));
-    return mass > 0.0 ? half_ * sum / (b * mass) : 0.0;
+    float mass = gaussianSegment(sqrt(k), lo, hi);
+    float mean = mass > 0.0 ? half_ * sum / (b * mass) : 0.0;
+    return vec2(mean, sum > 0.0 ? clamp(weightedU / sum, lo, hi) : uLight);
 }
 
 // The source of one particle's visible segment [lo, hi] of the ray, for compositing it as one layer:
 // every light at the shading point u, except point and spot lights whose closest approach to the
-// ray lies inside the segment, whose 1/d² is averaged over the kernel instead.
+// ray lies inside the segment, near it: their falloff is averaged over the kernel instead, and the
+// rest (phase, shadows, slices) is taken where that falloff is centred.
 vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u, GpuParticle particle) {
     vec3 p = origin + dir * (c.tClosest + u);
     vec3 scattered = frame.ambient.rgb;
     for (int i = 0; i < frame.counts.x; ++i) {
-        float inverseSquare = 0.0;
+        float attenuation = -1.0;
         vec3 at = p;
         if (lights[i].direction.w > 0.5) {
             float uLight = dot(lights[i].position.xyz - origin, dir) - c.tClosest;
-            if (uLight > lo && uLight < hi && distance(at, lights[i].position.xyz) < 2.0 * radius) {
-                inverseSquare = kernelMeanInverseSquare(origin, dir, c, radius, lo, hi, lights[i].position.xyz);
-                at = origin + dir * (c.tClosest + uLight);  // the rest (cone, shadows, phase) where the light is nearest
+            if (uLight > lo && uLight < hi && distance(p, lights[i].position.xyz) < 2.0 * radius) {
+                vec2 mean = kernelMeanAttenuation(origin, dir, c, radius, lo, hi, i);
+                // The peak sits at optical depth v inside this particle's segment, so it is seen
+                // through e^−v of the particle itself, where compositing assumes (1 − e^−τ)/τ.
+                float tau = particle.albedoSigma.w * chordIntegral(c, radius, lo, hi);
+                float v = particle.albedoSigma.w * chordIntegral(c, radius, lo, mean.y);
+                attenuation = mean.x * (tau > 1e-4 ? exp(-v) * tau / oneMinusExpNeg(tau) : 1.0);
+                at = origin + dir * (c.tClosest + mean.y);
             }
         }
-        scattered += scatteredLight(i, at, dir, particle, inverseSquare);
+        scattered += scatteredLight(i, at, dir, particle, attenuation);
     }
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 }

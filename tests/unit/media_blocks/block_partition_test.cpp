@@ -1,4 +1,4 @@
-// Tests plugins/participating_media/core/src/block_partition.cpp: Morton-chunk blocks.
+// Tests plugins/participating_media/core/src/block_partition.cpp: median-bisection blocks.
 #include "nimbus/media/block_partition.h"
 
 #include <gtest/gtest.h>
@@ -91,28 +91,6 @@ TEST(BlockPartition, AutomaticCountIsRoundedSquareRootClamped) {
     EXPECT_EQ(automaticBlockCount(100000000), 1024);
 }
 
-TEST(BlockPartition, MortonCodeInterleavesXYZBitsFromTheLowest) {
-    EXPECT_EQ(mortonCode(0, 0, 0), 0u);
-    EXPECT_EQ(mortonCode(1, 0, 0), 1u);
-    EXPECT_EQ(mortonCode(0, 1, 0), 2u);
-    EXPECT_EQ(mortonCode(0, 0, 1), 4u);
-    EXPECT_EQ(mortonCode(2, 0, 0), 8u);
-    EXPECT_EQ(mortonCode(0x1fffff, 0x1fffff, 0x1fffff), (std::uint64_t{1} << 63) - 1);
-    EXPECT_EQ(mortonCode(0x200000, 0, 0), 0u) << "only 21 bits per axis";
-    std::mt19937 rng(3);
-    std::uniform_int_distribution<std::uint32_t> coord(0, 0x1fffff);
-    for (int trial = 0; trial < 1000; ++trial) {
-        const std::uint32_t x = coord(rng), y = coord(rng), z = coord(rng);
-        std::uint64_t expected = 0;
-        for (int bit = 0; bit < 21; ++bit) {
-            expected |= std::uint64_t{(x >> bit) & 1u} << (3 * bit);
-            expected |= std::uint64_t{(y >> bit) & 1u} << (3 * bit + 1);
-            expected |= std::uint64_t{(z >> bit) & 1u} << (3 * bit + 2);
-        }
-        ASSERT_EQ(mortonCode(x, y, z), expected) << x << " " << y << " " << z;
-    }
-}
-
 TEST(BlockPartition, CoversEveryParticleOnceInNearlyEqualBlocks) {
     for (std::size_t n : {1u, 2u, 7u, 100u, 500u, 1013u}) {
         const ParticleSet set = blobCloud(n, static_cast<unsigned>(n));
@@ -166,26 +144,23 @@ BlockPartition randomSplit(const ParticleSet& set, std::size_t blocks, unsigned 
 
 TEST(BlockPartition, BlocksAreFarMoreCompactThanARandomSplit) {
     // Member-centre spread over the cloud's, averaged over the blocks. Measured (500 particles, 22
-    // blocks, seeds 5–7): Morton chunks 0.51–0.53, a random split 0.90–0.92; an ideal split into
-    // 22 equal balls would give ~0.28 (so the bounds, 0.65× random and 0.6, leave ~10% margin).
+    // blocks, seeds 5–7): Morton chunks (the first partition) 0.51–0.53, a random split 0.90–0.92;
+    // an ideal split into 22 equal balls would give ~0.28.
     for (unsigned seed : {5u, 6u, 7u}) {
         const ParticleSet set = blobCloud(500, seed);
         const BlockPartition p = partitionIntoBlocks(set, 0);
-        const double morton = mean(blockSpreads(set, p));
+        const double spread = mean(blockSpreads(set, p));
         const double random = mean(blockSpreads(set, randomSplit(set, p.blocks.size(), seed)));
-        EXPECT_LT(morton, 0.65 * random) << "seed " << seed << ": Morton " << morton << ", random " << random;
-        EXPECT_LT(morton, 0.6) << "seed " << seed;
+        EXPECT_LT(spread, 0.65 * random) << "seed " << seed << ": blocks " << spread << ", random " << random;
+        EXPECT_LT(spread, 0.6) << "seed " << seed;
     }
 }
 
-// DISABLED: fails today. Morton chunks of equal size straddle the jumps of the Z-order curve: on
-// this cloud one block of 22 holds members from both ends of the cloud (x from -3.2 to 3.1 m), its
-// bounding radius 1.32× the cloud's (seeds 6, 7: 0.96×, 1.15×), while the median block is 0.58×
-// and an ideal one ~0.5× (the particle radius alone is 0.25×). Such a block's impostor spans the
-// cloud and its [front, back] interval is the whole cloud's, which defeats the uniform-density
-// scaling of seed 000 §2.4 there. Enable once the partition splits at curve jumps (or splits by
-// recursive median bisection, which keeps sizes within one).
-TEST(BlockPartition, DISABLED_EveryBlocksBoundingRadiusIsWellBelowTheClouds) {
+// Morton chunks of equal size (the first partition) failed this: they straddle the jumps of the
+// Z-order curve, and one block of 22 held members from both ends of the cloud (bounding radius
+// 1.32× the cloud's). A block whose impostor spans the cloud has the whole cloud's [front, back]
+// interval, which defeats the uniform-density scaling of seed 000 §2.4.
+TEST(BlockPartition, EveryBlocksBoundingRadiusIsWellBelowTheClouds) {
     for (unsigned seed : {5u, 6u, 7u}) {
         const ParticleSet set = blobCloud(500, seed);
         const BlockPartition p = partitionIntoBlocks(set, 0);
@@ -210,9 +185,8 @@ TEST(BlockPartition, IsDeterministic) {
 }
 
 TEST(BlockPartition, StableUnderASmallTranslationOfEveryParticle) {
-    // The Morton lattice is anchored in world space (cell 1 m here: mean radius 1.2 m), so a shift of
-    // 2 cm moves ~2% of the particles per axis across a cell face; membership changes only where one
-    // of those reorders a chunk boundary. Measured: 8 and 15 of 500 change.
+    // Median bisection depends only on the particles' relative order along the axes, which a common
+    // translation does not change (up to rounding of the positions).
     const ParticleSet set = blobCloud(500, 5);
     const BlockPartition before = partitionIntoBlocks(set, 0);
     for (const glm::dvec3 shift : {glm::dvec3(0.02, 0.0, 0.0), glm::dvec3(0.013, -0.017, 0.011)}) {
@@ -224,9 +198,8 @@ TEST(BlockPartition, StableUnderASmallTranslationOfEveryParticle) {
 }
 
 TEST(BlockPartition, MovingOneParticleChangesAtMostOneMemberPerBlockBoundary) {
-    // One particle moving in the Morton order shifts the ranks between its old and new place by one,
-    // so each chunk boundary in between hands over exactly one particle: at most blocks + 1 changes
-    // (measured worst over these trials: 21, bound 23).
+    // One particle crossing a split plane makes that split hand one particle back the other way, and
+    // so on down the tree: a few changes per level (the same bound the Morton chunks had: blocks + 1).
     const ParticleSet set = blobCloud(500, 5);
     const BlockPartition before = partitionIntoBlocks(set, 0);
     std::mt19937 rng(17);

@@ -249,7 +249,7 @@ bool samePermuted(const ParticleSet& a, const ParticleSet& b) {
 // check in Settings (spawnMedia → applyRenderOverrides calls setDefault key by key, then checks them
 // all), and nothing undoes them. The next scene loaded into the same App is then refused for the
 // earlier scene's value: "absorber.gltf: node "soot" ...render.slices: slices: 999 is outside [4, 32]".
-TEST_F(MediaPluginTest, DISABLED_ARefusedSceneLeavesNoRenderSettingBehind) {
+TEST_F(MediaPluginTest, ARefusedSceneLeavesNoRenderSettingBehind) {
     const auto good = assets::loadScene(mediaTestScene("absorber"));
     nlohmann::json bad;
     for (const assets::Node& n : good.nodes)
@@ -306,7 +306,7 @@ TEST(MediaPluginGather, TransformedCloudEqualsParticlesAtTime) {
 // FAILS today: the same particles bit for bit, but not in the same order. campfire has two emitter
 // nodes (fire, then smoke); particlesAtTime appends them in node order, gatherParticles in the
 // order the ECS view visits the entities, which puts the smoke first.
-TEST(MediaPluginGather, DISABLED_CampfireEqualsParticlesAtTime) {
+TEST(MediaPluginGather, CampfireEqualsParticlesAtTime) {
     expectGatherEqualsParticlesAtTime(contentScene("campfire"), 4.0);
 }
 

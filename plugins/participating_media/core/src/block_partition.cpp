@@ -7,21 +7,32 @@
 namespace nimbus::media {
 namespace {
 
-std::uint64_t spreadBits(std::uint64_t v) {
-    v &= 0x1fffff;
-    v = (v | v << 32) & 0x1f00000000ffffULL;
-    v = (v | v << 16) & 0x1f0000ff0000ffULL;
-    v = (v | v << 8) & 0x100f00f00f00f00fULL;
-    v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-    v = (v | v << 2) & 0x1249249249249249ULL;
-    return v;
+// Splits order[p(b0), p(b1)) into blocks b0..b1-1, where p(b) = floor(b·n/K) is where block b
+// starts: the same split points whatever the recursion, so sizes differ by at most one.
+void bisect(const ParticleSet& particles, std::vector<std::uint32_t>& order, std::size_t b0, std::size_t b1, std::size_t count,
+            std::size_t blocks) {
+    if (b1 - b0 <= 1) return;
+    auto start = [&](std::size_t b) { return b * count / blocks; };
+    const auto first = order.begin() + static_cast<std::ptrdiff_t>(start(b0));
+    const auto last = order.begin() + static_cast<std::ptrdiff_t>(start(b1));
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (auto it = first; it != last; ++it) {
+        lo = glm::min(lo, particles.position[*it]);
+        hi = glm::max(hi, particles.position[*it]);
+    }
+    const glm::dvec3 extent = hi - lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const std::size_t bm = (b0 + b1) / 2;
+    const auto middle = order.begin() + static_cast<std::ptrdiff_t>(start(bm));
+    std::nth_element(first, middle, last, [&](std::uint32_t a, std::uint32_t b) {
+        const double pa = particles.position[a][axis], pb = particles.position[b][axis];
+        return pa < pb || (pa == pb && a < b);
+    });
+    bisect(particles, order, b0, bm, count, blocks);
+    bisect(particles, order, bm, b1, count, blocks);
 }
 
 }  // namespace
-
-std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-    return spreadBits(x) | spreadBits(y) << 1 | spreadBits(z) << 2;
-}
 
 int automaticBlockCount(std::size_t particles) {
     if (particles == 0) return 0;
@@ -33,35 +44,18 @@ BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount)
     const std::size_t n = particles.size();
     if (n == 0) return out;
     const std::size_t blocks = std::min<std::size_t>(n, static_cast<std::size_t>(blockCount > 0 ? blockCount : automaticBlockCount(n)));
-
-    double meanRadius = 0.0;
-    glm::dvec3 lo(std::numeric_limits<double>::infinity());
-    for (std::size_t i = 0; i < n; ++i) {
-        meanRadius += particles.radius[i];
-        lo = glm::min(lo, particles.position[i]);
-    }
-    meanRadius /= static_cast<double>(n);
-    // World-anchored lattice: cell a power of two (stable while the mean radius stays in one octave),
-    // origin on a coarse multiple of 2^20 cells (stable while the medium stays in one such region).
-    const double cell = std::exp2(std::floor(std::log2(std::max(meanRadius, 1e-6))));
-    const double coarse = cell * static_cast<double>(1 << 20);
-    const glm::dvec3 anchor = glm::floor(lo / coarse) * coarse;
-    std::vector<std::uint64_t> codes(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const glm::dvec3 c = glm::clamp(glm::floor((particles.position[i] - anchor) / cell), glm::dvec3(0.0), glm::dvec3(2097151.0));
-        codes[i] = mortonCode(static_cast<std::uint32_t>(c.x), static_cast<std::uint32_t>(c.y), static_cast<std::uint32_t>(c.z));
-    }
     out.order.resize(n);
     std::iota(out.order.begin(), out.order.end(), 0u);
-    std::stable_sort(out.order.begin(), out.order.end(), [&](std::uint32_t a, std::uint32_t b) { return codes[a] < codes[b]; });
+    bisect(particles, out.order, 0, blocks, n, blocks);
 
     out.blocks.resize(blocks);
     for (std::size_t b = 0; b < blocks; ++b) {
-        // Even split: block b holds [b·n/blocks, (b+1)·n/blocks).
         const std::size_t first = b * n / blocks, last = (b + 1) * n / blocks;
         Block& block = out.blocks[b];
         block.first = static_cast<std::uint32_t>(first);
         block.count = static_cast<std::uint32_t>(last - first);
+        // Members in index order inside a block: the order nth_element left them in is an artefact.
+        std::sort(out.order.begin() + static_cast<std::ptrdiff_t>(first), out.order.begin() + static_cast<std::ptrdiff_t>(last));
         glm::dvec3 sum(0.0);
         for (std::size_t k = first; k < last; ++k) sum += particles.position[out.order[k]];
         block.centre = sum / static_cast<double>(last - first);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "nimbus/base/error.h"
 #include "nimbus/base/log.h"
@@ -20,6 +21,7 @@ using nimbus::ecs::Entity;
 using nimbus::ecs::World;
 
 MediaRenderSettings readSettings(const Settings* settings);
+void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaScene& media);
 
 std::string settingText(const nlohmann::json& value) {
     if (value.is_boolean()) return value.get<bool>() ? "on" : "off";
@@ -55,6 +57,18 @@ void applyRenderOverrides(World& world, const assets::Scene& scene, const MediaS
 void spawnMedia(World& world, const assets::Scene& scene) {
     const MediaScene media = parseMediaScene(scene);  // throws before anything is added
     if (media.empty()) return;
+    // A refused scene must leave no setting behind either (spawnScene undoes the entities).
+    std::optional<Settings> before;
+    if (const auto* settings = world.tryResource<Settings>()) before = *settings;
+    try {
+        spawnMediaEntities(world, scene, media);
+    } catch (...) {
+        if (before) world.resource<Settings>() = *before;
+        throw;
+    }
+}
+
+void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaScene& media) {
     applyRenderOverrides(world, scene, media);
     std::vector<Entity> byNode(scene.nodes.size(), nimbus::ecs::kNullEntity);
     world.view<scene::SceneNode>().each([&](Entity e, const scene::SceneNode& node) {
@@ -126,12 +140,22 @@ void renderSystem(World& world) {
 }  // namespace
 
 void gatherParticles(World& world, ParticleSet& out) {
-    world.view<const MediumComponent, const ParticleCloud, const scene::Transform>().each(
-        [&](Entity, const MediumComponent& medium, const ParticleCloud& cloud, const scene::Transform& transform) {
-            appendCloudParticles(out, medium.medium, cloud.positions, cloud.radii, cloud.densities, transform.world);
-        });
-    world.view<const MediumComponent, const EmitterComponent>().each(
-        [&](Entity, const MediumComponent& medium, const EmitterComponent& emitter) { emitter.simulation.appendParticles(out, medium.medium); });
+    // Static clouds then emitters, each in glTF node order, as media::particlesAtTime does: views
+    // visit entities in storage order, so sort by node to make the set independent of it.
+    auto inNodeOrder = [&]<typename Component>() {
+        std::vector<std::pair<int, Entity>> entities;
+        world.view<const MediumComponent, const Component, const scene::SceneNode>().each(
+            [&](Entity e, const MediumComponent&, const Component&, const scene::SceneNode& node) { entities.emplace_back(node.node, e); });
+        std::sort(entities.begin(), entities.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        return entities;
+    };
+    for (const auto& [node, e] : inNodeOrder.template operator()<ParticleCloud>()) {
+        const ParticleCloud& cloud = world.get<ParticleCloud>(e);
+        appendCloudParticles(out, world.get<MediumComponent>(e).medium, cloud.positions, cloud.radii, cloud.densities,
+                             world.get<scene::Transform>(e).world);
+    }
+    for (const auto& [node, e] : inNodeOrder.template operator()<EmitterComponent>())
+        world.get<EmitterComponent>(e).simulation.appendParticles(out, world.get<MediumComponent>(e).medium);
 }
 
 void MediaPlugin::build(nimbus::ecs::App& app) {

@@ -1,12 +1,14 @@
 #pragma once
-// Groups particles into blocks (seed 000 §2): Morton-ordered chunks of equal size.
+// Groups particles into blocks (seed 000 §2) by recursive median bisection: the particles of a
+// range of blocks are split at the median of their longest axis, in the ratio of the block counts
+// on either side, until each range is one block.
 //
-// Why Morton chunks: every block gets the same number of particles, so impostor work is balanced;
-// consecutive Morton codes are spatially compact, so a block's impostor is small on screen; the
-// codes live on a lattice anchored in world space (cell = the largest power of two not above the
-// mean particle radius), so a block's members change only where particles cross lattice cells,
-// not when the medium's bounds move — the grouping is stable from frame to frame and
-// deterministic (stable sort, ties by particle index).
+// Why median bisection: every block gets the same number of particles (±1), so impostor work is
+// balanced; every block is a compact box of space, so its impostor is small on screen and its
+// [front, back] interval tight (Morton-order chunks, tried first, straddle the jumps of the
+// Z curve: a block could hold both ends of a cloud); and it is stable: it depends only on the
+// particles' relative order along the axes (ties broken by particle index), so moving the whole
+// medium changes nothing and one particle moving changes a few memberships near split planes.
 //
 // Block count: fixed by the caller (`--set blocks=N`, a scene's render.blocks) or chosen by the
 // seed's cost model. Simulation and impostor work grow as b + N/b for N particles in blocks of b,
@@ -38,7 +40,5 @@ int automaticBlockCount(std::size_t particles);
 // Splits `particles` into min(blockCount, N) blocks (blockCount <= 0: automatic).
 BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount);
 
-// Morton code of a non-negative lattice cell (21 bits per axis); exposed for tests.
-std::uint64_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z);
 
 }  // namespace nimbus::media
