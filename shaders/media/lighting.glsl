@@ -17,7 +17,10 @@ float shadowTexelDepth(GpuLightView v, float stored) {
 // Seed 001 §III: instead of a lit/unlit test per pixel, compare the occluder depth the shadow map
 // stores with the receiver's depth and weight smoothly over the particle's own depth extent: the
 // fraction of a Gaussian of standard deviation `softness` (R/3) that lies in front of the occluder.
-// A 3×3 neighbourhood adds lateral softness. 1 = fully lit.
+// The 3×3 taps are spread over ±softness across the light's view, not over shadow-map texels: a
+// particle is lit over the whole extent of its kernel, so a shadow boundary crossing it should fade
+// over that width (the reference integrates visibility along each ray through the kernel), not cut
+// at one texel. 1 = fully lit.
 float mediumMeshVisibility(int lightIndex, vec3 p, float softness) {
     GpuLight L = lights[lightIndex];
     int first = int(L.spot.z);
@@ -26,29 +29,50 @@ float mediumMeshVisibility(int lightIndex, vec3 p, float softness) {
     vec2 uv;
     if (!lightViewUv(v, p, uv)) return 1.0;  // outside the shadow map: nothing casts there
     float receiver = -(v.view * vec4(p, 1.0)).z;
-    float texel = 1.0 / float(frame.counts.z);
     float width = max(softness, 1e-4) * 1.41421356;
+    // The light view's right and up axes in world space (rows of its rotation).
+    vec3 right = vec3(v.view[0][0], v.view[1][0], v.view[2][0]);
+    vec3 up = vec3(v.view[0][1], v.view[1][1], v.view[2][1]);
     float lit = 0.0;
     for (int y = -1; y <= 1; ++y) {
         for (int x = -1; x <= 1; ++x) {
-            float stored = texture(uShadowDepth, vec3(uv + vec2(x, y) * texel, v.params2.x)).r;
-            float occluder = shadowTexelDepth(v, stored);
+            vec2 tapUv;
+            if (!lightViewUv(v, p + (right * float(x) + up * float(y)) * softness, tapUv)) {
+                lit += 1.0;
+                continue;
+            }
+            float occluder = shadowTexelDepth(v, texture(uShadowDepth, vec3(tapUv, v.params2.x)).r);
             lit += 0.5 * (1.0 + erfApprox((occluder - receiver) / width));
         }
     }
     return lit / 9.0;
 }
 
+// The same comparison at one shadow-map tap, without the lateral filter: 1 lit, 0 shadowed, soft
+// only over the particle's depth extent.
+float meshVisibilityTap(int lightIndex, vec3 p, float softness) {
+    GpuLight L = lights[lightIndex];
+    int first = int(L.spot.z);
+    if (first < 0) return 1.0;
+    GpuLightView v = shadowViews[lightViewIndex(first, int(L.spot.w), L.position.xyz, p)];
+    vec2 uv;
+    if (!lightViewUv(v, p, uv)) return 1.0;
+    float receiver = -(v.view * vec4(p, 1.0)).z;
+    float occluder = shadowTexelDepth(v, texture(uShadowDepth, vec3(uv, v.params2.x)).r);
+    return 0.5 * (1.0 + erfApprox((occluder - receiver) / (max(softness, 1e-4) * 1.41421356)));
+}
+
 // Light i scattered towards the camera at p, per unit optical depth and albedo: p(θ) E V T.
 // `attenuation` ≥ 0 replaces the point/spot light's falloff (shape / d²) at p with a value averaged
-// over the particle (see kernelMeanAttenuation); < 0 keeps sampleLight's.
-vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float attenuation) {
+// over the particle (see kernelMeanAttenuation); < 0 keeps sampleLight's. Likewise `visibility` ≥ 0
+// replaces the mesh visibility at p (see segmentVisibility).
+vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float attenuation, float visibility) {
     LightSample s = sampleLight(i, p);
     vec3 irradiance = attenuation >= 0.0 ? lights[i].radiance.rgb * attenuation : s.irradiance;
     if (all(lessThanEqual(irradiance, vec3(0.0)))) return vec3(0.0);
     // θ between the light's travel direction (−toLight) and the direction to the camera (−viewDir).
     float phase = phaseValue(particle.extra.x, particle.emissionG.w, dot(s.toLight, viewDir));
-    float visibility = mediumMeshVisibility(i, p, particle.positionRadius.w / 3.0);
+    if (visibility < 0.0) visibility = mediumMeshVisibility(i, p, particle.positionRadius.w / 3.0);
     if (visibility <= 0.0) return vec3(0.0);
     return phase * irradiance * (visibility * exp(-mediumOpticalDepth(i, p)));
 }
@@ -57,7 +81,7 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float att
 // albedo · (Σ p E V T + L_amb) + emission.
 vec3 mediumSource(vec3 p, vec3 viewDir, GpuParticle particle) {
     vec3 scattered = frame.ambient.rgb;
-    for (int i = 0; i < frame.counts.x; ++i) scattered += scatteredLight(i, p, viewDir, particle, -1.0);
+    for (int i = 0; i < frame.counts.x; ++i) scattered += scatteredLight(i, p, viewDir, particle, -1.0, -1.0);
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 }
 
@@ -89,6 +113,38 @@ vec2 kernelMeanAttenuation(vec3 origin, vec3 dir, Chord c, float radius, float l
     return vec2(mean, sum > 0.0 ? clamp(weightedU / sum, lo, hi) : uLight);
 }
 
+// Mesh visibility of light i over a particle's visible segment [lo, hi], as the fraction of the
+// kernel's mass on the lit side. The reference integrates visibility along each ray, so a shadow
+// boundary crossing a particle shades it by how much of its mass lies past the boundary: smooth
+// from pixel to pixel, never a cut through the billboard (seed 001 §III asks for the same). Taps at
+// both ends and the shading point; where they disagree, the crossing is found by bisection and the
+// boundary treated as locally flat, so the lit fraction is an erf ratio.
+float segmentVisibility(int i, vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u) {
+    float softness = radius / 3.0;
+    vec3 base = origin + dir * c.tClosest;
+    float vLo = meshVisibilityTap(i, base + dir * lo, softness);
+    float vMid = meshVisibilityTap(i, base + dir * u, softness);
+    float vHi = meshVisibilityTap(i, base + dir * hi, softness);
+    bool firstHalf = (vLo > 0.5) != (vMid > 0.5), secondHalf = (vMid > 0.5) != (vHi > 0.5);
+    if (!firstHalf && !secondHalf) return (vLo + 4.0 * vMid + vHi) / 6.0;  // no boundary crossed: depth-soft only
+    float a = firstHalf ? lo : u, b = firstHalf ? u : hi;
+    bool litAtA = (firstHalf ? vLo : vMid) > 0.5;
+    for (int step = 0; step < 6; ++step) {
+        float m = 0.5 * (a + b);
+        if ((meshVisibilityTap(i, base + dir * m, softness) > 0.5) == litAtA) a = m;
+        else b = m;
+    }
+    float crossing = 0.5 * (a + b);
+    float sk = sqrt(KERNEL_FALLOFF) / radius;
+    float total = gaussianSegment(sk, lo, hi);
+    if (!(total > 0.0)) return vMid;
+    float before = gaussianSegment(sk, lo, crossing) / total;  // mass fraction in front of the crossing
+    // Lit before the crossing when the segment starts lit; the far part may cross back (both halves).
+    float lit = litAtA == (firstHalf ? vLo > 0.5 : vMid > 0.5) && firstHalf ? (vLo > 0.5 ? before : 1.0 - before)
+                                                                            : (vHi > 0.5 ? 1.0 - before : before);
+    return clamp(lit, 0.0, 1.0);
+}
+
 // The source of one particle's visible segment [lo, hi] of the ray, for compositing it as one layer:
 // every light at the shading point u, except point and spot lights whose closest approach to the
 // ray lies inside the segment, near it: their falloff is averaged over the kernel instead, and the
@@ -99,6 +155,7 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
     for (int i = 0; i < frame.counts.x; ++i) {
         float attenuation = -1.0;
         vec3 at = p;
+        float atU = u;
         if (lights[i].direction.w > 0.5) {
             float uLight = dot(lights[i].position.xyz - origin, dir) - c.tClosest;
             if (uLight > lo && uLight < hi && distance(p, lights[i].position.xyz) < 2.0 * radius) {
@@ -109,9 +166,11 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
                 float v = particle.albedoSigma.w * chordIntegral(c, radius, lo, mean.y);
                 attenuation = mean.x * (tau > 1e-4 ? exp(-v) * tau / oneMinusExpNeg(tau) : 1.0);
                 at = origin + dir * (c.tClosest + mean.y);
+                atU = mean.y;
             }
         }
-        scattered += scatteredLight(i, at, dir, particle, attenuation);
+        float visibility = lights[i].spot.z >= 0.0 ? segmentVisibility(i, origin, dir, c, radius, lo, hi, atU) : 1.0;
+        scattered += scatteredLight(i, at, dir, particle, attenuation, visibility);
     }
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 }
