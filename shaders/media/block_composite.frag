@@ -59,6 +59,6 @@ void main() {
     block.albedoSigma = vec4(s.sums1.yzw / s.tau, 0.0);
     block.emissionG = vec4(s.sums2.xyz / s.tau, clamp(s.sums2.w / s.tau, -0.999, 0.999));
     block.extra = vec4(0.0);
-    vec3 source = mediumSource(origin + dir * tShade, dir, block);
+    vec3 source = blockSegmentSource(origin, dir, s.front, max(end, s.front), tShade, block);
     outColor = vec4(source * alpha, alpha);
 }

@@ -174,3 +174,34 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
     }
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 }
+
+// segmentVisibility for a block's segment [t0, t1] of the ray, with the uniform density a block
+// assumes (seed 000 §2.4): the lit fraction is the lit share of the segment's length.
+float uniformSegmentVisibility(int i, vec3 origin, vec3 dir, float t0, float t1, float t, float softness) {
+    float vLo = meshVisibilityTap(i, origin + dir * t0, softness);
+    float vMid = meshVisibilityTap(i, origin + dir * t, softness);
+    float vHi = meshVisibilityTap(i, origin + dir * t1, softness);
+    bool firstHalf = (vLo > 0.5) != (vMid > 0.5), secondHalf = (vMid > 0.5) != (vHi > 0.5);
+    if ((!firstHalf && !secondHalf) || !(t1 > t0)) return (vLo + 4.0 * vMid + vHi) / 6.0;
+    float a = firstHalf ? t0 : t, b = firstHalf ? t : t1;
+    bool litAtA = (firstHalf ? vLo : vMid) > 0.5;
+    for (int step = 0; step < 6; ++step) {
+        float m = 0.5 * (a + b);
+        if ((meshVisibilityTap(i, origin + dir * m, softness) > 0.5) == litAtA) a = m;
+        else b = m;
+    }
+    float before = (0.5 * (a + b) - t0) / (t1 - t0);  // share of the segment in front of the crossing
+    return clamp(firstHalf ? (vLo > 0.5 ? before : 1.0 - before) : (vHi > 0.5 ? 1.0 - before : before), 0.0, 1.0);
+}
+
+// The source of a block's visible segment [t0, t1] (uniform density inside a block): every light
+// at the shading point t, with the mesh visibility taken over the segment.
+vec3 blockSegmentSource(vec3 origin, vec3 dir, float t0, float t1, float t, GpuParticle block) {
+    vec3 p = origin + dir * t;
+    vec3 scattered = frame.ambient.rgb;
+    for (int i = 0; i < frame.counts.x; ++i) {
+        float visibility = lights[i].spot.z >= 0.0 ? uniformSegmentVisibility(i, origin, dir, t0, t1, t, block.positionRadius.w / 3.0) : 1.0;
+        scattered += scatteredLight(i, p, dir, block, -1.0, visibility);
+    }
+    return block.albedoSigma.rgb * scattered + block.emissionG.rgb;
+}

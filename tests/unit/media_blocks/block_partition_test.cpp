@@ -77,18 +77,16 @@ void expectValidPartition(const ParticleSet& set, const BlockPartition& p, std::
     }
 }
 
-TEST(BlockPartition, AutomaticCountIsRoundedSquareRootClamped) {
+TEST(BlockPartition, AutomaticCountIsTwiceTheRoundedSquareRootClamped) {
     EXPECT_EQ(automaticBlockCount(0), 0);
-    EXPECT_EQ(automaticBlockCount(1), 1);
-    EXPECT_EQ(automaticBlockCount(2), 1);   // √2 = 1.41
-    EXPECT_EQ(automaticBlockCount(3), 2);   // √3 = 1.73
-    EXPECT_EQ(automaticBlockCount(500), 22);  // √500 = 22.36: cloud.gltf
-    EXPECT_EQ(automaticBlockCount(506), 22);  // 22.49
-    EXPECT_EQ(automaticBlockCount(507), 23);  // 22.52
-    EXPECT_EQ(automaticBlockCount(10000), 100);
-    EXPECT_EQ(automaticBlockCount(1024 * 1024), 1024);
-    EXPECT_EQ(automaticBlockCount(1025 * 1025), 1024);  // clamped
-    EXPECT_EQ(automaticBlockCount(100000000), 1024);
+    EXPECT_EQ(automaticBlockCount(1), 2);   // 2·1; partitionIntoBlocks never makes more blocks than particles
+    EXPECT_EQ(automaticBlockCount(2), 3);   // 2·1.41 = 2.83
+    EXPECT_EQ(automaticBlockCount(500), 45);  // 2·22.36 = 44.7: cloud.gltf
+    EXPECT_EQ(automaticBlockCount(8000), 179);  // 2·89.4: cumulus.gltf
+    EXPECT_EQ(automaticBlockCount(10000), 200);
+    EXPECT_EQ(automaticBlockCount(1024 * 1024), 2048);
+    EXPECT_EQ(automaticBlockCount(1025 * 1025), 2048);  // clamped
+    EXPECT_EQ(automaticBlockCount(100000000), 2048);
 }
 
 TEST(BlockPartition, CoversEveryParticleOnceInNearlyEqualBlocks) {

@@ -36,7 +36,7 @@ void bisect(const ParticleSet& particles, std::vector<std::uint32_t>& order, std
 
 int automaticBlockCount(std::size_t particles) {
     if (particles == 0) return 0;
-    return std::clamp(static_cast<int>(std::lround(std::sqrt(static_cast<double>(particles)))), 1, 1024);
+    return std::clamp(static_cast<int>(std::lround(2.0 * std::sqrt(static_cast<double>(particles)))), 1, 2048);
 }
 
 BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount) {
