@@ -93,8 +93,9 @@ TEST(BlockPartition, CoversEveryParticleOnceInNearlyEqualBlocks) {
     for (std::size_t n : {1u, 2u, 7u, 100u, 500u, 1013u}) {
         const ParticleSet set = blobCloud(n, static_cast<unsigned>(n));
         SCOPED_TRACE("n = " + std::to_string(n));
-        expectValidPartition(set, partitionIntoBlocks(set, 0), static_cast<std::size_t>(automaticBlockCount(n)));
-        expectValidPartition(set, partitionIntoBlocks(set, -3), static_cast<std::size_t>(automaticBlockCount(n)));
+        const std::size_t automatic = std::min<std::size_t>(n, static_cast<std::size_t>(automaticBlockCount(n)));
+        expectValidPartition(set, partitionIntoBlocks(set, 0), automatic);
+        expectValidPartition(set, partitionIntoBlocks(set, -3), automatic);
         for (int blocks : {1, 3, 22, 64})
             expectValidPartition(set, partitionIntoBlocks(set, blocks), std::min<std::size_t>(n, static_cast<std::size_t>(blocks)));
     }
@@ -141,16 +142,16 @@ BlockPartition randomSplit(const ParticleSet& set, std::size_t blocks, unsigned 
 }
 
 TEST(BlockPartition, BlocksAreFarMoreCompactThanARandomSplit) {
-    // Member-centre spread over the cloud's, averaged over the blocks. Measured (500 particles, 22
-    // blocks, seeds 5–7): Morton chunks (the first partition) 0.51–0.53, a random split 0.90–0.92;
-    // an ideal split into 22 equal balls would give ~0.28.
+    // Member-centre spread over the cloud's, averaged over the blocks. Measured (500 particles, 45
+    // blocks, seeds 5–7): median bisection 0.27, a random split 0.84–0.88. (Morton chunks, the first
+    // partition, gave 0.51–0.53 with 22 blocks.)
     for (unsigned seed : {5u, 6u, 7u}) {
         const ParticleSet set = blobCloud(500, seed);
         const BlockPartition p = partitionIntoBlocks(set, 0);
         const double spread = mean(blockSpreads(set, p));
         const double random = mean(blockSpreads(set, randomSplit(set, p.blocks.size(), seed)));
         EXPECT_LT(spread, 0.65 * random) << "seed " << seed << ": blocks " << spread << ", random " << random;
-        EXPECT_LT(spread, 0.6) << "seed " << seed;
+        EXPECT_LT(spread, 0.4) << "seed " << seed;
     }
 }
 
@@ -195,34 +196,41 @@ TEST(BlockPartition, StableUnderASmallTranslationOfEveryParticle) {
     }
 }
 
-TEST(BlockPartition, MovingOneParticleChangesAtMostOneMemberPerBlockBoundary) {
+TEST(BlockPartition, MovingOneParticleChangesFewMemberships) {
     // One particle crossing a split plane makes that split hand one particle back the other way, and
-    // so on down the tree: a few changes per level (the same bound the Morton chunks had: blocks + 1).
+    // so on down the tree: a few changes per level, at most blocks + 1 in all. The exception: when
+    // the moved particle grows a subtree's bounding box enough to change its longest axis, that
+    // subtree is split along another axis and reshuffled. Measured (500 particles, 45 blocks, 20
+    // trials): 19 trials within blocks + 1, one at 86 memberships (17%). A random split would change
+    // ~98%.
     const ParticleSet set = blobCloud(500, 5);
     const BlockPartition before = partitionIntoBlocks(set, 0);
     std::mt19937 rng(17);
     std::uniform_int_distribution<std::size_t> pick(0, set.size() - 1);
+    int beyondTheTreeBound = 0;
     for (int trial = 0; trial < 20; ++trial) {
         ParticleSet moved = set;
         const std::size_t i = pick(rng);
         moved.position[i] = set.position[pick(rng)] + glm::dvec3(0.3, -0.2, 0.1);
         const std::size_t changed = changedMemberships(before, partitionIntoBlocks(moved, 0), set.size());
-        EXPECT_LE(changed, before.blocks.size() + 1) << "trial " << trial;
+        beyondTheTreeBound += changed > before.blocks.size() + 1 ? 1 : 0;
+        EXPECT_LE(changed, set.size() / 4) << "trial " << trial;
     }
-    // A small nudge of one particle (within its lattice cell or into the next) changes little.
+    EXPECT_LE(beyondTheTreeBound, 2) << "an axis change should be the exception";
+    // A small nudge of one particle changes little.
     ParticleSet nudged = set;
     nudged.position[123] += glm::dvec3(0.05, 0.0, 0.0);
     EXPECT_LE(changedMemberships(before, partitionIntoBlocks(nudged, 0), set.size()), 3u);
 }
 
 TEST(BlockPartition, FarFromTheOriginBlocksStayCompactAndValid) {
-    // Positions are double and the lattice origin snaps to a coarse multiple of the cell, so a cloud
-    // 1e5 m away splits like one at the origin.
+    // Positions are double and the splits compare them exactly, so a cloud 1e5 m away splits like
+    // one at the origin.
     const ParticleSet near = blobCloud(500, 5);
     ParticleSet far = near;
     for (auto& p : far.position) p += glm::dvec3(1.0e5, 250.0, -1.0e5);
     const BlockPartition p = partitionIntoBlocks(far, 0);
-    expectValidPartition(far, p, 22);
+    expectValidPartition(far, p, static_cast<std::size_t>(automaticBlockCount(far.size())));
     EXPECT_NEAR(mean(blockSpreads(far, p)), mean(blockSpreads(near, partitionIntoBlocks(near, 0))), 0.1);
 }
 
