@@ -1,7 +1,6 @@
 #include "medium_quadrature.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "nimbus/media/optics.h"
@@ -48,7 +47,8 @@ void MediumQuadrature::evaluate(const ViewRayMedium& medium, const SourceFunctio
 }
 
 QuadratureResult MediumQuadrature::integrate(const ViewRayMedium& medium, const SourceFunction& source,
-                                             const glm::dvec3& offset, const QuadratureSettings& settings) {
+                                             const glm::dvec3& offset, const QuadratureSettings& settings,
+                                             std::span<const double> cuts) {
     intervals_.clear();
     evaluations_ = 0;
     const auto& clusters = medium.clusters();
@@ -61,14 +61,18 @@ QuadratureResult MediumQuadrature::integrate(const ViewRayMedium& medium, const 
         // Start from up to three intervals: cut at half the cluster's opacity and at its middle along
         // the ray. The second cut matters where the cluster thins out: v packs a long, sparse tail into a
         // sliver, and a lone 15-point rule can step over the light changing there without noticing.
-        const double tMid = 0.5 * (medium.clusterStart(c) + medium.clusterEnd(c));
-        std::array<double, 4> cuts = {0.0, 0.5 * iv.v1, opacity(medium.opticalDepthTo(c, tMid)), iv.v1};
-        std::sort(cuts.begin(), cuts.end());
-        for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
-            if (!(cuts[q + 1] > cuts[q])) continue;
+        // The caller's cuts matter near point and spot lights: a ray passing b from one carries a
+        // spike ~b wide and I/b² high there, which no node of a wider first interval would find.
+        const double t0 = medium.clusterStart(c), t1 = medium.clusterEnd(c);
+        cuts_.assign({0.0, 0.5 * iv.v1, opacity(medium.opticalDepthTo(c, 0.5 * (t0 + t1))), iv.v1});
+        for (double t : cuts)
+            if (t > t0 && t < t1) cuts_.push_back(opacity(medium.opticalDepthTo(c, t)));
+        std::sort(cuts_.begin(), cuts_.end());
+        for (std::size_t q = 0; q + 1 < cuts_.size(); ++q) {
+            if (!(cuts_[q + 1] > cuts_[q])) continue;
             Interval part = iv;
-            part.v0 = cuts[q];
-            part.v1 = cuts[q + 1];
+            part.v0 = cuts_[q];
+            part.v1 = cuts_[q + 1];
             evaluate(medium, source, part);
             intervals_.push_back(part);
         }

@@ -3,11 +3,13 @@
 // per-cluster variable v = 1 - exp(-τ) (reference_renderer.h, "Quadrature"):
 //   ∫ T(0,t) σ_t(t) S̄(t) dt = Σ_clusters T(cluster start) ∫₀^{1-exp(-τ_c)} S̄(t(v)) dv.
 // Each cluster starts as up to three intervals (cut at half its opacity and at its middle along the
-// ray); then the interval with the largest |K15 - G7| is bisected until the sum of those estimates is
-// within the tolerance of the pixel value.
+// ray), further cut at the distances the caller names (where the source can spike: a point or spot
+// light's closest approach); then the interval with the largest |K15 - G7| is bisected until the sum
+// of those estimates is within the tolerance of the pixel value.
 //
 // Does not: know what the source is (a callback evaluates S̄ at a located sample).
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -34,8 +36,9 @@ using SourceFunction = std::function<glm::dvec3(const RaySample&)>;
 class MediumQuadrature {
 public:
     // `offset` is the rest of the pixel (T(0,d)·L_s), which counts towards the relative tolerance.
+    // `cuts` are distances along the ray where the first intervals must end (any order, any range).
     QuadratureResult integrate(const ViewRayMedium& medium, const SourceFunction& source, const glm::dvec3& offset,
-                               const QuadratureSettings& settings);
+                               const QuadratureSettings& settings, std::span<const double> cuts = {});
 
 private:
     struct Interval {
@@ -49,6 +52,7 @@ private:
     void evaluate(const ViewRayMedium& medium, const SourceFunction& source, Interval& interval);
 
     std::vector<Interval> intervals_;
+    std::vector<double> cuts_;
     int evaluations_ = 0;
 };
 

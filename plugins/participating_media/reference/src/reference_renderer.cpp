@@ -30,7 +30,27 @@ struct Scratch {
     ViewRayMedium medium;
     MediumQuadrature quadrature;
     std::vector<double> weights;
+    std::vector<double> cuts;
 };
+
+// Where along origin + t·dir the in-scattered light of a point or spot light peaks: its closest
+// approach t_l, and t_l ± b, ± 4b, ± 16b around it (b the ray's distance from the light), so that the
+// quadrature's first intervals resolve the 1/(b² + (t − t_l)²) spike and its shoulders.
+void lightCuts(const std::vector<assets::ResolvedLight>& lights, const glm::dvec3& origin, const glm::dvec3& dir,
+               std::vector<double>& cuts) {
+    cuts.clear();
+    for (const assets::ResolvedLight& light : lights) {
+        if (light.params.type == assets::LightType::Directional) continue;
+        const glm::dvec3 toLight = light.position - origin;
+        const double tl = glm::dot(toLight, dir);
+        const double b = glm::length(toLight - tl * dir);
+        cuts.push_back(tl);
+        for (double k : {1.0, 4.0, 16.0}) {
+            cuts.push_back(tl - k * b);
+            cuts.push_back(tl + k * b);
+        }
+    }
+}
 
 }  // namespace
 
@@ -117,7 +137,8 @@ RayRadiance ReferenceRenderer::Impl::trace(const glm::dvec3& origin, const glm::
     const SourceFunction source = [&](const RaySample& s) {
         return light->mediumSource(origin, dir, medium, s.piece, s.t, weights);
     };
-    const QuadratureResult r = scratch.quadrature.integrate(medium, source, behind, q);
+    lightCuts(inputs.lights, origin, dir, scratch.cuts);
+    const QuadratureResult r = scratch.quadrature.integrate(medium, source, behind, q, scratch.cuts);
     out.inScattered = r.value;
     out.radiance += r.value;
     out.evaluations = r.evaluations;
