@@ -71,7 +71,7 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float att
     vec3 irradiance = attenuation >= 0.0 ? lights[i].radiance.rgb * attenuation : s.irradiance;
     if (all(lessThanEqual(irradiance, vec3(0.0)))) return vec3(0.0);
     // θ between the light's travel direction (−toLight) and the direction to the camera (−viewDir).
-    float phase = phaseValue(particle.extra.x, particle.emissionG.w, dot(s.toLight, viewDir));
+    float phase = phaseValue(particle.extra.x, particle.emissionG.w, s.toLight, viewDir);
     if (visibility < 0.0) visibility = mediumMeshVisibility(i, p, particle.positionRadius.w / 3.0);
     if (visibility <= 0.0) return vec3(0.0);
     return phase * irradiance * (visibility * exp(-mediumOpticalDepth(i, p)));

@@ -133,13 +133,18 @@ vec2 chordMoments(Chord c, float radius, float u0, float u1) {
     return vec2(s * m, s * s * max(v, 0.0));
 }
 
-float henyeyGreenstein(float cosTheta, float g) {
-    float denom = max(1.0 + g * g - 2.0 * g * cosTheta, 1e-8);
+// Henyey–Greenstein between unit vectors a, b (cos θ = a·b). Its denominator 1 + g² − 2g cos θ is
+// (1 − g)² + g|a − b|² = (1 + g)² − g|a + b|²: near the peak of g = 0.99 it is ~1e-4, and forming it
+// from a float cos θ would lose ~1% to cancellation (rings around the sun in a forward-scattering
+// medium); the chord lengths |a ∓ b| keep full precision.
+float henyeyGreenstein(vec3 a, vec3 b, float g) {
+    vec3 chord = g >= 0.0 ? a - b : a + b;
+    float denom = max((1.0 - abs(g)) * (1.0 - abs(g)) + abs(g) * dot(chord, chord), 1e-8);
     return (1.0 - g * g) / (4.0 * PI * denom * sqrt(denom));
 }
 
 float rayleighPhase(float cosTheta) { return 3.0 / (16.0 * PI) * (1.0 + cosTheta * cosTheta); }
 
-float phaseValue(float phase, float g, float cosTheta) {
-    return phase > 0.5 ? rayleighPhase(cosTheta) : henyeyGreenstein(cosTheta, g);
+float phaseValue(float phase, float g, vec3 a, vec3 b) {
+    return phase > 0.5 ? rayleighPhase(dot(a, b)) : henyeyGreenstein(a, b, g);
 }
