@@ -175,6 +175,23 @@ def spot_in_cloud():
     return b
 
 
+def spot_near_ray():
+    """A spot light inside a dense particle (σ 73 /m, R 0.82 m) cut by the ground, and the camera
+    inside the same particle 0.2 m from the light: rays of the pixels around (98, 7) at 160×90 pass
+    1–8 mm from the light, across the cone's apex. (An unseen variant that exposed a reference bug,
+    moved to the origin.)"""
+    b = Builder()
+    b.environment(background=[0.0, 0.0, 0.0], ambient=[0.02, 0.02, 0.02])
+    ground(b, half=60.0)
+    b.node("particle", ext={"medium": medium(73.35187, g=0.5, albedo=0.5),
+                            "particles": b.particles([[0.41735223, 0.0, 0.33607158]], [0.81802058])})
+    b.spot("spot", position=(0.04090103, 0.24540621, 0.0), direction=(0.5, -1.0, 0.35), intensity=36.658895,
+           inner=0.35, outer=0.7)
+    eye = (0.13538629, 0.27077258, 0.20309944)
+    b.camera("main", eye=eye, target=(eye[0] - 0.5, eye[1] - 0.45, eye[2] - 0.74), yfov=0.8, znear=0.027077258)
+    return b
+
+
 def far_from_origin(offset):
     """The same small scene (ground, box, cloud, sun, camera) translated by `offset`."""
     rng = random.Random(7)
@@ -287,6 +304,7 @@ HARD_CASES = {
     "surface_through_centres": surface_through_centres,
     "light_directions": light_directions,
     "spot_in_cloud": spot_in_cloud,
+    "spot_near_ray": spot_near_ray,
     "far_from_origin": lambda: far_from_origin((1.0e5, 1.0e5, -1.0e5)),
     "far_from_origin_at_origin": lambda: far_from_origin((0.0, 0.0, 0.0)),
     "zero_particles": zero_particles,
@@ -316,25 +334,30 @@ def unseen_variant(rng, index):
     albedo = rng.choice([0.5, 0.9, 1.0])
     offset = (rng.uniform(0.8e5, 1.2e5), rng.uniform(-1e4, 1e4), rng.uniform(-1.2e5, -0.8e5)) if far else (0.0, 0.0, 0.0)
 
-    # Huge particles (60–120 m) come with a scene scaled up around them, so the cloud still fits the
-    # view; sub-pixel ones (4–8 mm) are seen from ~11 m, where a pixel spans ~7 cm at 160×90.
+    # Huge particles (60–120 m) come with a scene scaled up around them; sub-pixel ones (4–8 mm) fill
+    # a smaller blob, so that a few percent of the pixel rays still hit one.
     scale = 40.0 if size == "huge" else 1.0
     radii = {"subpixel": (0.004, 0.008), "normal": (0.4, 1.0), "huge": (60.0, 120.0)}[size]
+    extent = [e * scale * (0.5 if size == "subpixel" else 1.0) for e in (2.5, 1.4, 2.0)]
     centre_y = 0.0 if through else 1.8 * scale
     if count <= 2:
-        pos = [[rng.uniform(-0.5, 0.5) * scale, 0.0, rng.uniform(-0.5, 0.5) * scale] for _ in range(count)]
+        pos = [[rng.uniform(-0.5, 0.5) * r, 0.0, rng.uniform(-0.5, 0.5) * r] for r in [radii[1]] * count]
         rad = [rng.uniform(*radii) for _ in range(count)]
         den = [1.0] * count
     else:
-        pos, rad, den = blob(rng, count, (0, 0, 0), (2.5 * scale, 1.4 * scale, 2.0 * scale), radii)
+        pos, rad, den = blob(rng, count, (0, 0, 0), extent, radii)
         if through:
             for p in pos:
                 p[1] = 0.0  # every centre exactly on the ground plane
+    # The cloud's bounding radius: the camera stands back far enough for it to fill ~60% of the view.
+    reach = max(math.sqrt(sum(c * c for c in p)) + r for p, r in zip(pos, rad))
 
     b = Builder()
-    dark = column <= 1e-2 or light == "spot_inside"  # the medium alone must carry the image
+    # A thin medium or a spot-lit one would vanish against a sky: a black background then, so the
+    # medium carries the image, and ambient light so that all of it shows (not only a phase peak).
+    dark = column <= 1e-2 or light == "spot_inside"
     b.environment(background=[0.0, 0.0, 0.0] if dark else [0.35, 0.45, 0.7],
-                  ambient=[0.0, 0.0, 0.0] if dark else [0.12, 0.14, 0.18])
+                  ambient=([0.02] * 3 if light == "spot_inside" else [0.3] * 3) if dark else [0.12, 0.14, 0.18])
     sigma = column_extinction(column, pos, rad, den)
     b.node("cloud", translation=(offset[0], offset[1] + centre_y, offset[2]),
            ext={"medium": medium(sigma, g=g, albedo=albedo), "particles": b.particles(pos, rad, den)})
@@ -344,19 +367,23 @@ def unseen_variant(rng, index):
     # The sun shines straight down; the camera looks along it, against it, across it, or obliquely.
     view = {"parallel": (0.0, -1.0, 0.0), "antiparallel": (0.0, 1.0, 0.0), "perpendicular": (0.0, 0.0, -1.0),
             "oblique": (-0.6, -0.5, -0.62), "spot_inside": (-0.5, -0.45, -0.74)}[light]
+    view = [c / math.sqrt(sum(v * v for v in view)) for c in view]
     if light == "spot_inside":
-        b.spot("spot", position=(offset[0] + 0.05 * scale, offset[1] + centre_y + 0.02 * scale, offset[2]),
-               direction=(0.3, -1.0, 0.25), intensity=40.0 * scale * scale, inner=0.3, outer=0.55)
+        # Among the particles (above the ground when it cuts them), shining down and sideways.
+        mean_r = sum(rad) / len(rad)
+        b.spot("spot", position=(offset[0] + 0.05 * mean_r, offset[1] + centre_y + (0.3 if through else 0.02) * mean_r,
+                                 offset[2]),
+               direction=(0.5, -1.0, 0.35), intensity=20.0 * reach * reach, inner=0.35, outer=0.7)
     else:
         b.sun("sun", direction=(0.0, -1.0, 0.0), intensity=3.0)
     if inside:
-        eye = [0.1 * scale, centre_y + (0.2 if through else 0.05) * scale, 0.15 * scale]
+        eye = [0.1 * reach, centre_y + (0.2 if through else 0.02) * reach, 0.15 * reach]
     else:
-        dist = 11.0 * scale
+        dist = 1.6 * reach / math.tan(0.4)
         eye = [-view[0] * dist, centre_y - view[1] * dist, -view[2] * dist]
     target = [eye[i] + view[i] for i in range(3)] if inside else [0.0, centre_y, 0.0]
     b.camera("main", eye=[eye[i] + offset[i] for i in range(3)], target=[target[i] + offset[i] for i in range(3)],
-             yfov=0.8, znear=0.05 * scale)
+             yfov=0.8, znear=min(0.05 * scale, 0.02 * reach))
     tags = [size, "tau%g" % column, light, "g%+.2f" % g, "n%d" % count]
     tags += [t for t, on in (("far", far), ("inside", inside), ("through", through)) if on]
     name = "variant_%02d_" % index + "_".join(tags)
@@ -376,7 +403,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--unseen", help="only write unseen variants, into this folder")
     parser.add_argument("--seed", type=int, default=2024, help="seed of the unseen variants")
-    parser.add_argument("--count", type=int, default=8, help="number of unseen variants")
+    parser.add_argument("--count", type=int, default=10, help="number of unseen variants")
     args = parser.parse_args()
     if args.unseen:
         write_unseen(args.unseen, args.seed, args.count)
