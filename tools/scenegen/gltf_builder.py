@@ -39,6 +39,21 @@ def quat_from_basis(right, up, back):
     return [(m02 + m20) / s, (m12 + m21) / s, 0.25 * s, (m10 - m01) / s]
 
 
+def ellipsoid_blob(rng, count, centre, radii, particle_radius, falloff):
+    """`count` particles uniform in an ellipsoid (drawn from `rng`), radii uniform in
+    `particle_radius`, densities 1 - falloff * (distance from the centre / the ellipsoid's)."""
+    positions, sizes, densities = [], [], []
+    while len(positions) < count:
+        p = [rng.uniform(-1, 1) for _ in range(3)]
+        r2 = sum(c * c for c in p)
+        if r2 > 1:
+            continue
+        positions.append([centre[i] + p[i] * radii[i] for i in range(3)])
+        sizes.append(rng.uniform(*particle_radius))
+        densities.append(1.0 - falloff * math.sqrt(r2))
+    return positions, sizes, densities
+
+
 def look_rotation(eye, target, up=(0.0, 1.0, 0.0)):
     """Rotation making a glTF camera/light (looking down local -Z) at eye look towards target."""
     forward = normalize([t - e for t, e in zip(target, eye)])

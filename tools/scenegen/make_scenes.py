@@ -8,7 +8,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
-from gltf_builder import Builder  # noqa: E402
+from gltf_builder import Builder, ellipsoid_blob  # noqa: E402
 
 OUT = os.path.join(os.path.dirname(__file__), "..", "..", "content", "scenes")
 
@@ -33,17 +33,7 @@ def demo():
 
 def blob_cloud(rng, count, centre, radii, particle_radius=(0.35, 0.7)):
     """Particles filling an ellipsoid, denser towards the middle (a cumulus-like blob)."""
-    import math
-    positions, sizes, densities = [], [], []
-    while len(positions) < count:
-        p = [rng.uniform(-1, 1) for _ in range(3)]
-        r2 = sum(c * c for c in p)
-        if r2 > 1:
-            continue
-        positions.append([centre[i] + p[i] * radii[i] for i in range(3)])
-        sizes.append(rng.uniform(*particle_radius))
-        densities.append(1.0 - 0.6 * math.sqrt(r2))
-    return positions, sizes, densities
+    return ellipsoid_blob(rng, count, centre, radii, particle_radius, falloff=0.6)
 
 
 def cloud():

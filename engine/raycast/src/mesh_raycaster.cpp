@@ -8,6 +8,7 @@
 
 #include <embree3/rtcore.h>
 
+#include "nimbus/assets/scene_queries.h"
 #include "nimbus/base/error.h"
 #include "nimbus/base/log.h"
 
@@ -68,19 +69,6 @@ void reportEmbreeError(void*, RTCError code, const char* message) {
     log::error("embree: error " + std::to_string(static_cast<int>(code)) + ": " + (message ? message : ""));
 }
 
-std::vector<bool> reachableNodes(const assets::Scene& scene) {
-    std::vector<bool> in(scene.nodes.size(), false);
-    std::vector<int> stack(scene.rootNodes.begin(), scene.rootNodes.end());
-    while (!stack.empty()) {
-        const int n = stack.back();
-        stack.pop_back();
-        if (n < 0 || static_cast<std::size_t>(n) >= in.size() || in[static_cast<std::size_t>(n)]) continue;
-        in[static_cast<std::size_t>(n)] = true;
-        for (const int c : scene.nodes[static_cast<std::size_t>(n)].children) stack.push_back(c);
-    }
-    return in;
-}
-
 RTCRayHit makeRayHit(const glm::dvec3& relativeOrigin, const glm::dvec3& dir, double tNear, double tFar) {
     RTCRayHit rh{};
     rh.ray.org_x = static_cast<float>(relativeOrigin.x);
@@ -104,7 +92,7 @@ RTCRayHit makeRayHit(const glm::dvec3& relativeOrigin, const glm::dvec3& dir, do
 
 MeshRaycaster::MeshRaycaster(const assets::Scene& scene, const std::vector<glm::dmat4>& world)
     : embree_(std::make_unique<EmbreeState>()) {
-    const std::vector<bool> in = reachableNodes(scene);
+    const std::vector<bool> in = assets::nodesInScene(scene);
 
     // The origin: centre of the world-space vertex bounds, computed in double before any float.
     glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());

@@ -20,23 +20,14 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tools", "scenegen"))
-from gltf_builder import Builder, normalize  # noqa: E402
+from gltf_builder import Builder, ellipsoid_blob, normalize  # noqa: E402
 
 KERNEL_FALLOFF = 4.5  # rho(r) = exp(-4.5 r^2 / R^2), r < R (DESIGN.md section 2)
 
 
 def blob(rng, count, centre, radii, particle_radius, falloff=0.6):
     """Particles filling an ellipsoid, denser towards the middle."""
-    positions, sizes, densities = [], [], []
-    while len(positions) < count:
-        p = [rng.uniform(-1, 1) for _ in range(3)]
-        r2 = sum(c * c for c in p)
-        if r2 > 1:
-            continue
-        positions.append([centre[i] + p[i] * radii[i] for i in range(3)])
-        sizes.append(rng.uniform(*particle_radius))
-        densities.append(1.0 - falloff * math.sqrt(r2))
-    return positions, sizes, densities
+    return ellipsoid_blob(rng, count, centre, radii, particle_radius, falloff)
 
 
 def optical_depth(positions, radii, densities, origin, direction, sigma=1.0):

@@ -18,7 +18,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tools", "scenegen"))
-from gltf_builder import Builder  # noqa: E402
+from gltf_builder import Builder, ellipsoid_blob  # noqa: E402
 
 # Optical depth through the centre of one particle of peak extinction σ and radius R: ≈ 0.8355·σR.
 CENTRE_COLUMN = math.sqrt(math.pi / 4.5) * math.erf(math.sqrt(4.5))
@@ -26,16 +26,7 @@ CENTRE_COLUMN = math.sqrt(math.pi / 4.5) * math.erf(math.sqrt(4.5))
 
 def blob(rng, count, centre, radii, particle_radius):
     """Particles uniform in an ellipsoid (seeded), densities falling off towards its rim."""
-    positions, sizes, densities = [], [], []
-    while len(positions) < count:
-        p = [rng.uniform(-1, 1) for _ in range(3)]
-        r2 = sum(c * c for c in p)
-        if r2 > 1:
-            continue
-        positions.append([centre[i] + p[i] * radii[i] for i in range(3)])
-        sizes.append(rng.uniform(*particle_radius))
-        densities.append(1.0 - 0.5 * math.sqrt(r2))
-    return positions, sizes, densities
+    return ellipsoid_blob(rng, count, centre, radii, particle_radius, falloff=0.5)
 
 
 def write(b, path):

@@ -28,6 +28,17 @@ void unbindSliceLayers(GLuint framebuffer, const SliceView& view) {
         glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), 0, 0);
 }
 
+void setSliceViewUniforms(GLuint program, const SliceView& v, int resolution) {
+    const glm::mat4 inverseViewProjection = glm::inverse(v.view.viewProjection);
+    const glm::vec4 params(v.view.perspective ? 1.0f : 0.0f, v.view.depthNear, v.view.depthFar, static_cast<float>(v.slices));
+    const glm::vec2 size(static_cast<float>(resolution));
+    glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(v.view.view));
+    glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
+    glProgramUniformMatrix4fv(program, 3, 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
+    glProgramUniform2fv(program, 4, 1, glm::value_ptr(size));
+    glProgramUniform3fv(program, 6, 1, glm::value_ptr(v.lightOrigin));
+}
+
 LightSlicePass::LightSlicePass() {
     program_ = gpu::compileProgram({.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag"});
 }
@@ -59,15 +70,8 @@ render::ResourceHandle LightSlicePass::add(render::FrameGraph& graph, const std:
                 bindSliceLayers(fbo.id(), resources.id(d.slices), v);
 
                 const glm::mat4 projection = v.view.viewProjection * glm::inverse(v.view.view);
-                const glm::mat4 inverseViewProjection = glm::inverse(v.view.viewProjection);
-                const glm::vec4 params(v.view.perspective ? 1.0f : 0.0f, v.view.depthNear, v.view.depthFar, static_cast<float>(v.slices));
-                const glm::vec2 size(static_cast<float>(resolution));
-                glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(v.view.view));
-                glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
-                glProgramUniformMatrix4fv(program, 3, 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
-                glProgramUniform2fv(program, 4, 1, glm::value_ptr(size));
+                setSliceViewUniforms(program, v, resolution);
                 glProgramUniformMatrix4fv(program, 5, 1, GL_FALSE, glm::value_ptr(projection));
-                glProgramUniform3fv(program, 6, 1, glm::value_ptr(v.lightOrigin));
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
                 glBindVertexArray(0);
