@@ -32,8 +32,9 @@ inline std::filesystem::path contentScene(const std::string& name) {
 // A Session in `particles` mode (named explicitly, so a change of the default cannot move these tests).
 inline sandbox::SessionOptions particlesMode(const std::filesystem::path& scene, double time = 0.0,
                                              std::vector<std::string> settings = {}) {
-    settings.insert(settings.begin(), "mode=particles");
-    return {scene, time, std::move(settings)};
+    std::vector<std::string> all{"mode=particles"};
+    all.insert(all.end(), settings.begin(), settings.end());
+    return {scene, time, std::move(all)};
 }
 
 // The reference image of the session's current state (the same camera rule, particles and poses).

@@ -181,7 +181,7 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
     }
     if (reduced) {
         if (!upsamplePass_) upsamplePass_ = std::make_unique<MediaUpsamplePass>();
-        const float threshold = settings_.upsampleThreshold > 0.0f ? settings_.upsampleThreshold : 0.05f;
+        const float threshold = settings_.upsampleThreshold > 0.0f ? settings_.upsampleThreshold : 0.2f;
         media = upsamplePass_->add(graph, context, media, target, threshold);
     }
     context.mediaColor = media;

@@ -29,7 +29,7 @@ struct MediaRenderSettings {
     float impostorScale = 0.0f;  // blocks mode: impostor texels per covered pixel; 0: 0.5
     bool instancing = false;   // blocks mode: one block prototype instanced at every block (seed 000 §2's b + N/b)
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
-    float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.05
+    float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2 (see upsample.frag)
 };
 
 struct MediaFrameStats {
