@@ -8,12 +8,24 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 
 namespace nimbus::gpu {
 namespace {
 
-TEST(WindowContext, IsGl45CoreWithAWindowOfTheRequestedSize) {
-    auto context = Context::create({.kind = ContextKind::Window, .width = 96, .height = 64, .title = "nimbus test"});
+// One window for the suite: closing GLFW's last window drops the X connection, and Xvfb resets when
+// its last client leaves (xvfb-run also passes -noreset, see CMakeLists.txt).
+class WindowContext : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        context_ = Context::create({.kind = ContextKind::Window, .width = 96, .height = 64, .title = "nimbus test"});
+    }
+    static void TearDownTestSuite() { context_.reset(); }
+    static inline std::unique_ptr<Context> context_;
+};
+
+TEST_F(WindowContext, IsGl45CoreWithAWindowOfTheRequestedSize) {
+    Context* context = context_.get();
     ASSERT_NE(context, nullptr);
     EXPECT_NE(context->nativeWindow(), nullptr);
     EXPECT_GE(epoxy_gl_version(), 45);
@@ -31,11 +43,12 @@ TEST(WindowContext, IsGl45CoreWithAWindowOfTheRequestedSize) {
     EXPECT_FALSE(context->shouldClose());
 }
 
-TEST(WindowContext, DrawsIntoTheWindowsBackBufferAndPresentsIt) {
-    auto context = Context::create({.kind = ContextKind::Window, .width = 32, .height = 32});
+TEST_F(WindowContext, DrawsIntoTheWindowsBackBufferAndPresentsIt) {
+    Context* context = context_.get();
+    ASSERT_NE(context, nullptr);
     context->makeCurrent();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, 32, 32);
+    glViewport(0, 0, 96, 64);
     glClearColor(0.25f, 0.5f, 1.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     std::array<std::uint8_t, 4> pixel{};
