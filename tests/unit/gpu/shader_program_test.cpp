@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <string>
 
 #include "gl_test_context.h"
 #include "nimbus/base/error.h"
@@ -14,7 +17,11 @@ namespace nimbus::gpu {
 namespace {
 
 using test::GlTest;
-using test::ScratchFolder;
+
+// tests/data/shader_fixtures/<case>: the stages each test loads (README.md there).
+std::filesystem::path fixture(const std::string& name) {
+    return std::filesystem::path(NIMBUS_TEST_DATA_DIR) / "shader_fixtures" / name;
+}
 
 std::size_t occurrences(const std::string& text, const std::string& needle) {
     std::size_t count = 0;
@@ -33,19 +40,13 @@ std::string messageOf(const std::function<void()>& f) {
 }
 
 TEST(PreprocessShader, InsertsDefinesAfterVersionAndKeepsLineNumbers) {
-    ScratchFolder dir;
-    dir.write("main.frag", "#version 450 core\n// comment\nvoid main() {}\n");
-    const PreprocessedSource s = preprocessShader(dir.path(), "main.frag", {"FOO", "BAR 2"});
+    const PreprocessedSource s = preprocessShader(fixture("defines"), "main.frag", {"FOO", "BAR 2"});
     EXPECT_EQ(s.text, "#version 450 core\n#define FOO\n#define BAR 2\n#line 2 0\n// comment\nvoid main() {}\n");
     EXPECT_EQ(s.files, std::vector<std::string>{"main.frag"});
 }
 
 TEST(PreprocessShader, IncludesEachFileOncePerStage) {
-    ScratchFolder dir;
-    dir.write("main.frag", "#version 450 core\n#include \"a.glsl\"\n#include \"b.glsl\"\nvoid main() {}\n");
-    dir.write("a.glsl", "float fromA;\n");
-    dir.write("b.glsl", "  #  include \"a.glsl\"\nfloat fromB;\n");
-    const PreprocessedSource s = preprocessShader(dir.path(), "main.frag", {});
+    const PreprocessedSource s = preprocessShader(fixture("include_once"), "main.frag", {});
     EXPECT_EQ(occurrences(s.text, "float fromA;"), 1u);
     EXPECT_EQ(occurrences(s.text, "float fromB;"), 1u);
     EXPECT_EQ(occurrences(s.text, "#include"), 0u);
@@ -56,39 +57,27 @@ TEST(PreprocessShader, IncludesEachFileOncePerStage) {
 }
 
 TEST(PreprocessShader, IncludePathsAreRelativeToTheShaderFolder) {
-    ScratchFolder dir;
-    dir.write("media/particles.frag", "#version 450 core\n#include \"common/math.glsl\"\nvoid main() {}\n");
-    dir.write("common/math.glsl", "const float PI = 3.14159265;\n");
-    const PreprocessedSource s = preprocessShader(dir.path(), "media/particles.frag", {});
+    const PreprocessedSource s = preprocessShader(fixture("relative"), "media/particles.frag", {});
     EXPECT_EQ(s.files, (std::vector<std::string>{"media/particles.frag", "common/math.glsl"}));
     EXPECT_NE(s.text.find("const float PI"), std::string::npos);
 }
 
 TEST(PreprocessShader, RefusesIncludeCycles) {
-    ScratchFolder dir;
-    dir.write("main.frag", "#version 450 core\n#include \"a.glsl\"\n");
-    dir.write("a.glsl", "#include \"b.glsl\"\n");
-    dir.write("b.glsl", "#include \"a.glsl\"\n");
-    const std::string message = messageOf([&] { preprocessShader(dir.path(), "main.frag", {}); });
+    const std::string message = messageOf([&] { preprocessShader(fixture("cycle"), "main.frag", {}); });
     EXPECT_NE(message.find("cycle"), std::string::npos) << message;
     EXPECT_NE(message.find("a.glsl"), std::string::npos) << message;
 }
 
 TEST(PreprocessShader, RefusesAFileIncludingItself) {
-    ScratchFolder dir;
-    dir.write("main.frag", "#version 450 core\n#include \"main.frag\"\n");
-    EXPECT_THROW(preprocessShader(dir.path(), "main.frag", {}), SystemError);
+    EXPECT_THROW(preprocessShader(fixture("self"), "main.frag", {}), SystemError);
 }
 
 TEST(PreprocessShader, RefusesMissingFilesAndMissingVersion) {
-    ScratchFolder dir;
-    dir.write("main.frag", "#version 450 core\n#include \"nowhere.glsl\"\n");
-    dir.write("plain.frag", "void main() {}\n");
-    std::string message = messageOf([&] { preprocessShader(dir.path(), "main.frag", {}); });
+    std::string message = messageOf([&] { preprocessShader(fixture("missing"), "main.frag", {}); });
     EXPECT_NE(message.find("nowhere.glsl"), std::string::npos) << message;
-    message = messageOf([&] { preprocessShader(dir.path(), "plain.frag", {}); });
+    message = messageOf([&] { preprocessShader(fixture("missing"), "plain.frag", {}); });
     EXPECT_NE(message.find("#version"), std::string::npos) << message;
-    message = messageOf([&] { preprocessShader(dir.path(), "absent.vert", {}); });
+    message = messageOf([&] { preprocessShader(fixture("missing"), "absent.vert", {}); });
     EXPECT_NE(message.find("absent.vert"), std::string::npos) << message;
 }
 
@@ -125,15 +114,9 @@ TEST(MapShaderLog, NamesUnknownSourceNumbers) {
 
 class CompileProgram : public GlTest {};
 
-constexpr const char* kVertex = "#version 450 core\nvoid main() { gl_Position = vec4(0.0, 0.0, 0.0, 1.0); }\n";
-
 TEST_F(CompileProgram, BuildsAValidProgram) {
-    ScratchFolder dir;
-    dir.write("ok.vert", kVertex);
-    dir.write("ok.frag", "#version 450 core\n#include \"lib.glsl\"\nout vec4 c;\nvoid main() { c = vec4(VALUE * helper()); }\n");
-    dir.write("lib.glsl", "float helper() { return 0.5; }\n");
     const Program p = compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "ok.frag", .compute = "",
-                                      .defines = {"VALUE 2.0"}, .folder = dir.path()});
+                                      .defines = {"VALUE 2.0"}, .folder = fixture("compile")});
     ASSERT_TRUE(p);
     EXPECT_EQ(glIsProgram(p.id()), GL_TRUE);
     GLint linked = GL_FALSE;
@@ -143,46 +126,35 @@ TEST_F(CompileProgram, BuildsAValidProgram) {
 }
 
 TEST_F(CompileProgram, ReportsTheIncludedFileAndLineOfAnError) {
-    ScratchFolder dir;
-    dir.write("ok.vert", kVertex);
-    dir.write("main.frag", "#version 450 core\n#include \"lib.glsl\"\nout vec4 c;\nvoid main() { c = vec4(helper()); }\n");
-    dir.write("lib.glsl", "float helper() {\n    return 1.0;\n}\nfloat broken() { return undefined_thing; }\n");
     const std::string message = messageOf([&] {
-        compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "main.frag", .compute = "", .defines = {},
-                        .folder = dir.path()});
+        compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "include_error.frag", .compute = "", .defines = {},
+                        .folder = fixture("compile")});
     });
-    EXPECT_NE(message.find("lib.glsl:4"), std::string::npos) << message;
+    EXPECT_NE(message.find("broken_lib.glsl:4"), std::string::npos) << message;
     EXPECT_NE(message.find("undefined_thing"), std::string::npos) << message;
-    EXPECT_NE(message.find("main.frag"), std::string::npos) << "the program is named: " << message;
+    EXPECT_NE(message.find("include_error.frag"), std::string::npos) << "the program is named: " << message;
 }
 
 TEST_F(CompileProgram, DefinesDoNotShiftTheReportedLine) {
-    ScratchFolder dir;
-    dir.write("ok.vert", kVertex);
-    dir.write("bad.frag", "#version 450 core\nout vec4 c;\nvoid main() {\n    c = vec4(1.0) +;\n}\n");
     const std::string message = messageOf([&] {
-        compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "bad.frag", .compute = "",
-                        .defines = {"A 1", "B 2", "C"}, .folder = dir.path()});
+        compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "bad_line.frag", .compute = "",
+                        .defines = {"A 1", "B 2", "C"}, .folder = fixture("compile")});
     });
-    EXPECT_NE(message.find("bad.frag:4"), std::string::npos) << message;
+    EXPECT_NE(message.find("bad_line.frag:4"), std::string::npos) << message;
     EXPECT_EQ(message.find("0:"), std::string::npos) << "raw source numbers left in: " << message;
 }
 
 TEST_F(CompileProgram, ReportsLinkErrors) {
-    ScratchFolder dir;
-    dir.write("ok.vert", kVertex);
-    dir.write("needs_input.frag", "#version 450 core\nin vec3 vMissing;\nout vec4 c;\nvoid main() { c = vec4(vMissing, 1.0); }\n");
     const std::string message = messageOf([&] {
         compileProgram({.vertex = "ok.vert", .geometry = "", .fragment = "needs_input.frag", .compute = "", .defines = {},
-                        .folder = dir.path()});
+                        .folder = fixture("compile")});
     });
     EXPECT_NE(message.find("link"), std::string::npos) << message;
     EXPECT_NE(message.find("vMissing"), std::string::npos) << message;
 }
 
 TEST_F(CompileProgram, RefusesAProgramWithoutStages) {
-    ScratchFolder dir;
-    EXPECT_THROW(compileProgram({.vertex = "", .geometry = "", .fragment = "", .compute = "", .defines = {}, .folder = dir.path()}),
+    EXPECT_THROW(compileProgram({.vertex = "", .geometry = "", .fragment = "", .compute = "", .defines = {}, .folder = fixture("compile")}),
                  SystemError);
 }
 

@@ -1,0 +1,4 @@
+float helper() {
+    return 1.0;
+}
+float broken() { return undefined_thing; }

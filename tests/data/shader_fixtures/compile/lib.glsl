@@ -1,0 +1,1 @@
+float helper() { return 0.5; }

@@ -1,0 +1,3 @@
+#version 450 core
+#include "common/math.glsl"
+void main() {}
