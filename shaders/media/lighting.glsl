@@ -4,6 +4,8 @@
 // seed 001 §III (never a hard cut through a billboard). Needs common/frame, lights, light_views,
 // transmittance, media/optics.
 #include "common/shadow_views.glsl"
+#include "media/lamp_neighbourhood.glsl"
+#include "media/local_light_segment.glsl"
 layout(binding = 4) uniform sampler2DArray uShadowDepth;  // the mesh shadow map, read as raw depth
 
 // Light-view depth stored in a shadow map texel (reversed Z), back to metres along the light axis.
@@ -62,55 +64,16 @@ float meshVisibilityTap(int lightIndex, vec3 p, float softness) {
     return 0.5 * (1.0 + erfApprox((occluder - receiver) / (max(softness, 1e-4) * 1.41421356)));
 }
 
-// Light i scattered towards the camera at p, per unit optical depth and albedo: p(θ) E V T.
-// `attenuation` ≥ 0 replaces the point/spot light's falloff (shape / d²) at p with a value averaged
-// over the particle (see kernelMeanAttenuation); < 0 keeps sampleLight's. Likewise `visibility` ≥ 0
-// replaces the mesh visibility at p (see segmentVisibility).
-vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float attenuation, float visibility) {
+// Light i scattered towards the camera at p, per unit optical depth and albedo: p(θ) E V T, all
+// taken at p. `visibility` ≥ 0 replaces the mesh visibility at p (see segmentVisibility).
+vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float visibility) {
     LightSample s = sampleLight(i, p);
-    vec3 irradiance = attenuation >= 0.0 ? lights[i].radiance.rgb * attenuation : s.irradiance;
-    if (all(lessThanEqual(irradiance, vec3(0.0)))) return vec3(0.0);
+    if (all(lessThanEqual(s.irradiance, vec3(0.0)))) return vec3(0.0);
     // θ between the light's travel direction (−toLight) and the direction to the camera (−viewDir).
     float phase = phaseValue(particle.extra.x, particle.emissionG.w, s.toLight, viewDir);
     if (visibility < 0.0) visibility = mediumMeshVisibility(i, p, particle.positionRadius.w / 3.0);
     if (visibility <= 0.0) return vec3(0.0);
-    return phase * irradiance * (visibility * exp(-mediumOpticalDepth(i, p)));
-}
-
-// Source radiance per unit optical depth at p for a particle seen along `viewDir`:
-// albedo · (Σ p E V T + L_amb) + emission.
-vec3 mediumSource(vec3 p, vec3 viewDir, GpuParticle particle) {
-    vec3 scattered = frame.ambient.rgb;
-    for (int i = 0; i < frame.counts.x; ++i) scattered += scatteredLight(i, p, viewDir, particle, -1.0, -1.0);
-    return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
-}
-
-// The kernel-weighted mean, over the segment [lo, hi] (u from the chord's closest point), of a
-// point/spot light's falloff shape(x)/d², and the u where that falloff is centred. Near the light
-// 1/d² peaks far more sharply than the kernel varies, so one sample is badly wrong; with
-// u = u_l + b·tan φ the integral ∫ρ·shape/d² du becomes (1/b)∫ρ·shape dφ, smooth in φ (the spot
-// cone and range window included, per node), which six Gauss–Legendre points integrate well.
-vec2 kernelMeanAttenuation(vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, int light) {
-    vec3 toLight = lights[light].position.xyz - origin;
-    float tLight = dot(toLight, dir);
-    float b = max(length(toLight - tLight * dir), 1e-4 * radius);
-    float uLight = tLight - c.tClosest;
-    float phi0 = atan((lo - uLight) / b), phi1 = atan((hi - uLight) / b);
-    float k = KERNEL_FALLOFF / (radius * radius);
-    const float nodes[3] = float[](0.2386191861, 0.6612093865, 0.9324695142);
-    const float weights[3] = float[](0.4679139346, 0.3607615730, 0.1713244924);
-    float mid = 0.5 * (phi0 + phi1), half_ = 0.5 * (phi1 - phi0), sum = 0.0, weightedU = 0.0;
-    for (int j = 0; j < 3; ++j) {
-        for (int sgn = -1; sgn <= 1; sgn += 2) {
-            float u = uLight + b * tan(mid + float(sgn) * half_ * nodes[j]);
-            float w = weights[j] * exp(-k * u * u) * lightShape(light, origin + dir * (c.tClosest + u));
-            sum += w;
-            weightedU += w * u;
-        }
-    }
-    float mass = gaussianSegment(sqrt(k), lo, hi);
-    float mean = mass > 0.0 ? half_ * sum / (b * mass) : 0.0;
-    return vec2(mean, sum > 0.0 ? clamp(weightedU / sum, lo, hi) : uLight);
+    return phase * s.irradiance * (visibility * exp(-mediumOpticalDepth(i, p)));
 }
 
 // Mesh visibility of light i over a particle's visible segment [lo, hi], as the fraction of the
@@ -118,9 +81,9 @@ vec2 kernelMeanAttenuation(vec3 origin, vec3 dir, Chord c, float radius, float l
 // boundary crossing a particle shades it by how much of its mass lies past the boundary: smooth
 // from pixel to pixel, never a cut through the billboard (seed 001 §III asks for the same). Taps at
 // both ends and the shading point; where they disagree, the crossing is found by bisection and the
-// boundary treated as locally flat, so the lit fraction is an erf ratio.
-float segmentVisibility(int i, vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u) {
-    float softness = radius / 3.0;
+// boundary treated as locally flat, so the lit fraction is an erf ratio. `softness`: the depth
+// spread of each tap (meshVisibilityTap), R/3 for light gathered over the whole kernel.
+float segmentVisibility(int i, vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u, float softness) {
     vec3 base = origin + dir * c.tClosest;
     float vLo = meshVisibilityTap(i, base + dir * lo, softness);
     float vMid = meshVisibilityTap(i, base + dir * u, softness);
@@ -146,31 +109,36 @@ float segmentVisibility(int i, vec3 origin, vec3 dir, Chord c, float radius, flo
 }
 
 // The source of one particle's visible segment [lo, hi] of the ray, for compositing it as one layer:
-// every light at the shading point u, except point and spot lights whose closest approach to the
-// ray lies inside the segment, near it: their falloff is averaged over the kernel instead, and the
-// rest (phase, shadows, slices) is taken where that falloff is centred.
-vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u, GpuParticle particle) {
+// every light at the shading point u, except point and spot lights that vary across the segment:
+// the lamp's closest approach lies inside it, near the particle, or a spot cone's edge crosses it.
+// Those are integrated over the segment (local_light_segment.glsl), their mesh shadow taken where
+// the integrand is centred, and near the lamp their attenuation by the other layers made exact.
+vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u, GpuParticle particle,
+                   LayerOrder layer) {
     vec3 p = origin + dir * (c.tClosest + u);
     vec3 scattered = frame.ambient.rgb;
     for (int i = 0; i < frame.counts.x; ++i) {
-        float attenuation = -1.0;
-        vec3 at = p;
-        float atU = u;
         if (lights[i].direction.w > 0.5) {
-            float uLight = dot(lights[i].position.xyz - origin, dir) - c.tClosest;
-            if (uLight > lo && uLight < hi && distance(p, lights[i].position.xyz) < 2.0 * radius) {
-                vec2 mean = kernelMeanAttenuation(origin, dir, c, radius, lo, hi, i);
-                // The peak sits at optical depth v inside this particle's segment, so it is seen
-                // through e^−v of the particle itself, where compositing assumes (1 − e^−τ)/τ.
-                float tau = particle.albedoSigma.w * chordIntegral(c, radius, lo, hi);
-                float v = particle.albedoSigma.w * chordIntegral(c, radius, lo, mean.y);
-                attenuation = mean.x * (tau > 1e-4 ? exp(-v) * tau / oneMinusExpNeg(tau) : 1.0);
-                at = origin + dir * (c.tClosest + mean.y);
-                atU = mean.y;
+            vec2 lit = spotConeInterval(i, origin, dir, c, lo, hi);
+            if (!(lit.y > lit.x)) continue;  // the ray misses the cone inside this particle
+            // Near: the lamp lies closer to the segment than the kernel's size, so 1/d² varies across it.
+            float uNearest = clamp(dot(lights[i].position.xyz - origin, dir) - c.tClosest, lo, hi);
+            bool nearLamp = distance(origin + dir * (c.tClosest + uNearest), lights[i].position.xyz) < 2.0 * radius;
+            if (nearLamp || lit.x > lo || lit.y < hi) {
+                vec2 J = localLightSegment(origin, dir, c, radius, lo, hi, lit, i, particle, nearLamp, layer);
+                if (J.x <= 0.0) continue;
+                // The depth softness stands for the mass around a tap; here the light comes from
+                // within about the lamp's distance of J.y, not from the whole kernel (R/3 darkened the
+                // medium above a lit floor by up to 25 % around a lamp inside a particle).
+                float softness = min(radius / 3.0, distance(origin + dir * (c.tClosest + J.y), lights[i].position.xyz));
+                float visibility = lights[i].spot.z >= 0.0 ? segmentVisibility(i, origin, dir, c, radius, lo, hi, J.y, softness) : 1.0;
+                float transmittance = nearLamp ? 1.0 : exp(-mediumOpticalDepth(i, origin + dir * (c.tClosest + J.y)));
+                scattered += lights[i].radiance.rgb * (J.x * visibility * transmittance);
+                continue;
             }
         }
-        float visibility = lights[i].spot.z >= 0.0 ? segmentVisibility(i, origin, dir, c, radius, lo, hi, atU) : 1.0;
-        scattered += scatteredLight(i, at, dir, particle, attenuation, visibility);
+        float visibility = lights[i].spot.z >= 0.0 ? segmentVisibility(i, origin, dir, c, radius, lo, hi, u, radius / 3.0) : 1.0;
+        scattered += scatteredLight(i, p, dir, particle, visibility);
     }
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 }
@@ -201,7 +169,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, float t0, float t1, float t, GpuP
     vec3 scattered = frame.ambient.rgb;
     for (int i = 0; i < frame.counts.x; ++i) {
         float visibility = lights[i].spot.z >= 0.0 ? uniformSegmentVisibility(i, origin, dir, t0, t1, t, block.positionRadius.w / 3.0) : 1.0;
-        scattered += scatteredLight(i, p, dir, block, -1.0, visibility);
+        scattered += scatteredLight(i, p, dir, block, visibility);
     }
     return block.albedoSigma.rgb * scattered + block.emissionG.rgb;
 }

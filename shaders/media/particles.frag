@@ -16,12 +16,12 @@ layout(binding = 3) uniform sampler2D uSceneDepth;
 layout(location = 0) uniform int uSoftParticles;
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
 
-flat in int vParticle;
+flat in ivec2 vParticle;  // x: index, y: draw rank
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    GpuParticle particle = particles[vParticle];
+    GpuParticle particle = particles[vParticle.x];
     vec3 origin, dir;
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
     cameraRay(fragCoord, origin, dir);
@@ -44,6 +44,7 @@ void main() {
     float alpha = oneMinusExpNeg(tau);
     if (alpha <= 0.0) discard;
     float lo = max(u0, -chord.halfChord), hi = min(u1, chord.halfChord);
-    vec3 source = segmentSource(origin, dir, chord, radius, lo, hi, chordShadingPoint(chord, radius, u0, u1, tau), particle);
+    LayerOrder layer = LayerOrder(vParticle.x, vParticle.y, tEnd, uSoftParticles != 0 ? 1e30 : tSurface);
+    vec3 source = segmentSource(origin, dir, chord, radius, lo, hi, chordShadingPoint(chord, radius, u0, u1, tau), particle, layer);
     outColor = vec4(source * alpha, alpha);
 }

@@ -82,6 +82,7 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
             buffer_->upload(*particles_, context.view.origin);
             if (!blocks) {
                 buffer_->sortBackToFront(*particles_, context.view);
+                buffer_->uploadLampNeighbourhoods(*particles_, context.input.lights);
                 return;
             }
             // Everything blocks mode draws from this frame, uploaded before its first draw.

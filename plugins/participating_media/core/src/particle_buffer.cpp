@@ -43,4 +43,9 @@ void ParticleGpuBuffer::sortBackToFront(const ParticleSet& p, const render::View
         glNamedBufferSubData(order_.id(), 0, static_cast<GLsizeiptr>(order_cpu_.size() * sizeof(std::uint32_t)), order_cpu_.data());
 }
 
+void ParticleGpuBuffer::uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights) {
+    lamps_.find(particles, lights, order_cpu_);
+    lampBuffer_.upload(lamps_);
+}
+
 }  // namespace nimbus::media

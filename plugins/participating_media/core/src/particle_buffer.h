@@ -3,6 +3,7 @@
 // with positions relative to the frame origin, and a back-to-front draw order for the camera.
 #include <vector>
 
+#include "lamp_neighbourhood.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/media/particle_set.h"
 #include "nimbus/render/view.h"
@@ -26,8 +27,12 @@ public:
     // Sorts by distance from the eye, farthest first, and uploads the order.
     void sortBackToFront(const ParticleSet& particles, const render::View& view);
 
+    // After sorting: the particles around each point/spot light, with their draw ranks (particles mode).
+    void uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights);
+
     void bindParticles() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticlesBinding, particles_.id()); }
     void bindOrder() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDrawOrderBinding, order_.id()); }
+    void bindLampNeighbourhoods() const { lampBuffer_.bind(); }
     std::size_t count() const { return count_; }
 
 private:
@@ -36,6 +41,8 @@ private:
     std::vector<GpuParticle> staging_;
     std::vector<std::uint32_t> order_cpu_;
     std::vector<float> keys_;
+    LampNeighbourhoods lamps_;
+    LampNeighbourhoodBuffer lampBuffer_;
 };
 
 }  // namespace nimbus::media

@@ -42,6 +42,7 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
             context.frameData->bind();
             buffer.bindParticles();
             buffer.bindOrder();
+            buffer.bindLampNeighbourhoods();
             glBindTextureUnit(render::kSceneDepthUnit, resources.id(d.depth));
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));

@@ -1,0 +1,66 @@
+#include "lamp_neighbourhood.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace nimbus::media {
+
+void LampNeighbourhoods::find(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
+                              const std::vector<std::uint32_t>& drawOrder) {
+    lamps.assign(lights.size(), LampNeighbourhood{});
+    neighbours.clear();
+    const bool anyLamp = std::any_of(lights.begin(), lights.end(), [](const assets::ResolvedLight& light) {
+        return light.params.type != assets::LightType::Directional;
+    });
+    if (!anyLamp) return;
+    rank_.assign(particles.size(), 0u);
+    for (std::size_t r = 0; r < drawOrder.size() && r < rank_.size(); ++r) rank_[drawOrder[r]] = static_cast<std::uint32_t>(r);
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        if (lights[l].params.type == assets::LightType::Directional) continue;
+        const glm::dvec3 lamp = lights[l].position;
+        double largestContaining = 0.0;
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            if (glm::length(particles.position[i] - lamp) < particles.radius[i])
+                largestContaining = std::max(largestContaining, static_cast<double>(particles.radius[i]));
+        }
+        if (largestContaining <= 0.0) continue;
+        const double reach = largestContaining;
+        candidates_.clear();
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            const double distance = glm::length(particles.position[i] - lamp);
+            if (distance < particles.radius[i] + reach)
+                candidates_.emplace_back(distance / particles.radius[i], static_cast<std::uint32_t>(i));
+        }
+        // Closest relative to their radius first (the most mass at the lamp); ties by index, so deterministic.
+        std::sort(candidates_.begin(), candidates_.end());
+        if (candidates_.size() > kMaxLampNeighbours) candidates_.resize(kMaxLampNeighbours);
+        LampNeighbourhood& entry = lamps[l];
+        entry.first = static_cast<std::uint32_t>(neighbours.size());
+        entry.count = static_cast<std::uint32_t>(candidates_.size());
+        entry.reach = static_cast<float>(reach);
+        for (const auto& [key, index] : candidates_) neighbours.emplace_back(index, rank_[index]);
+    }
+}
+
+void LampNeighbourhoodBuffer::upload(const LampNeighbourhoods& n) {
+    // Layout (lamp_neighbourhood.glsl): uvec4 per lamp, then uvec2 per neighbour.
+    const std::size_t headerWords = n.lamps.size() * 4, words = headerWords + n.neighbours.size() * 2;
+    staging_.assign(std::max<std::size_t>(words, 4), 0u);
+    for (std::size_t l = 0; l < n.lamps.size(); ++l) {
+        staging_[4 * l] = n.lamps[l].first;
+        staging_[4 * l + 1] = n.lamps[l].count;
+        std::memcpy(&staging_[4 * l + 2], &n.lamps[l].reach, sizeof(float));
+    }
+    for (std::size_t i = 0; i < n.neighbours.size(); ++i) {
+        staging_[headerWords + 2 * i] = n.neighbours[i].x;
+        staging_[headerWords + 2 * i + 1] = n.neighbours[i].y;
+    }
+    const std::size_t bytes = staging_.size() * sizeof(std::uint32_t);
+    if (!buffer_ || capacity_ < bytes) {
+        capacity_ = std::max(bytes, capacity_ * 3 / 2);
+        buffer_ = gpu::createBuffer(capacity_, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    }
+    glNamedBufferSubData(buffer_.id(), 0, static_cast<GLsizeiptr>(bytes), staging_.data());
+}
+
+}  // namespace nimbus::media

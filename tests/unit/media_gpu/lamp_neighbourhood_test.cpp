@@ -1,0 +1,93 @@
+// Tests plugins/participating_media/core/src/lamp_neighbourhood.cpp: which particles are listed
+// around a point or spot light, with which draw rank, and when nothing is listed.
+#include "lamp_neighbourhood.h"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <vector>
+
+namespace nimbus::media {
+namespace {
+
+assets::ResolvedLight lamp(assets::LightType type, glm::dvec3 position) {
+    assets::ResolvedLight light;
+    light.params.type = type;
+    light.position = position;
+    return light;
+}
+
+ParticleSet particlesAt(const std::vector<glm::dvec3>& centres, float radius) {
+    ParticleSet set;
+    for (const glm::dvec3& c : centres) set.push(c, radius, 1.0f, Medium{});
+    return set;
+}
+
+std::vector<std::uint32_t> identityOrder(std::size_t n) {
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    return order;
+}
+
+TEST(LampNeighbourhoods, ListsTheParticlesWithinReachWithTheirDrawRank) {
+    // Particle 0 contains the lamp (reach = its radius 1); 1 reaches within 1 of the lamp; 2 does not.
+    const ParticleSet set = particlesAt({{0.2, 0.0, 0.0}, {1.5, 0.0, 0.0}, {5.0, 0.0, 0.0}}, 1.0f);
+    const std::vector<std::uint32_t> drawOrder{2, 0, 1};  // back to front: 2 first, then 0, then 1
+    LampNeighbourhoods n;
+    n.find(set, {lamp(assets::LightType::Point, {0.0, 0.0, 0.0})}, drawOrder);
+    ASSERT_EQ(n.lamps.size(), 1u);
+    EXPECT_FLOAT_EQ(n.lamps[0].reach, 1.0f);
+    ASSERT_EQ(n.lamps[0].count, 2u);
+    // Closest relative to the radius first.
+    EXPECT_EQ(n.neighbours[n.lamps[0].first].x, 0u);
+    EXPECT_EQ(n.neighbours[n.lamps[0].first].y, 1u);
+    EXPECT_EQ(n.neighbours[n.lamps[0].first + 1].x, 1u);
+    EXPECT_EQ(n.neighbours[n.lamps[0].first + 1].y, 2u);
+}
+
+TEST(LampNeighbourhoods, KeepsEachLampsEntriesApartAndInLightOrder) {
+    const ParticleSet set = particlesAt({{0.0, 0.0, 0.0}, {10.0, 0.0, 0.0}}, 1.0f);
+    LampNeighbourhoods n;
+    n.find(set,
+           {lamp(assets::LightType::Spot, {10.0, 0.0, 0.0}), lamp(assets::LightType::Directional, {}),
+            lamp(assets::LightType::Point, {0.0, 0.0, 0.0})},
+           identityOrder(2));
+    ASSERT_EQ(n.lamps.size(), 3u);
+    EXPECT_EQ(n.lamps[0].count, 1u);
+    EXPECT_EQ(n.neighbours[n.lamps[0].first].x, 1u);
+    EXPECT_EQ(n.lamps[1].count, 0u);  // directional: no peak to correct
+    EXPECT_EQ(n.lamps[2].count, 1u);
+    EXPECT_EQ(n.neighbours[n.lamps[2].first].x, 0u);
+}
+
+TEST(LampNeighbourhoods, ListsNothingForALampOutsideTheMedium) {
+    const ParticleSet set = particlesAt({{0.0, 0.0, 0.0}}, 1.0f);
+    LampNeighbourhoods n;
+    n.find(set, {lamp(assets::LightType::Point, {1.5, 0.0, 0.0})}, identityOrder(1));
+    ASSERT_EQ(n.lamps.size(), 1u);
+    EXPECT_EQ(n.lamps[0].count, 0u);
+    EXPECT_TRUE(n.neighbours.empty());
+}
+
+TEST(LampNeighbourhoods, KeepsTheClosestWhenMoreThanTheCapOverlap) {
+    // Many particles all containing the lamp, at growing distances: only the closest are kept.
+    std::vector<glm::dvec3> centres;
+    for (std::size_t i = 0; i < kMaxLampNeighbours + 40; ++i) centres.push_back({0.001 * static_cast<double>(i), 0.0, 0.0});
+    const ParticleSet set = particlesAt(centres, 1.0f);
+    LampNeighbourhoods n;
+    n.find(set, {lamp(assets::LightType::Point, {0.0, 0.0, 0.0})}, identityOrder(set.size()));
+    ASSERT_EQ(n.lamps[0].count, kMaxLampNeighbours);
+    for (std::uint32_t k = 0; k < n.lamps[0].count; ++k) EXPECT_LT(n.neighbours[n.lamps[0].first + k].x, kMaxLampNeighbours);
+}
+
+TEST(LampNeighbourhoods, DoesNothingWithoutPointOrSpotLights) {
+    const ParticleSet set = particlesAt({{0.0, 0.0, 0.0}}, 1.0f);
+    LampNeighbourhoods n;
+    n.find(set, {lamp(assets::LightType::Directional, {})}, identityOrder(1));
+    ASSERT_EQ(n.lamps.size(), 1u);
+    EXPECT_EQ(n.lamps[0].count, 0u);
+    EXPECT_TRUE(n.neighbours.empty());
+}
+
+}  // namespace
+}  // namespace nimbus::media
