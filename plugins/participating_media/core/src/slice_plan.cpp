@@ -37,7 +37,12 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
     e.depthExtent = e.depthFar - e.depthNear;
     e.meanRadius = radiusSum / static_cast<double>(particles.size());
     e.columnDepth = *std::max_element(column.begin(), column.end());
-    const double wanted = std::max(e.meanRadius > 0.0 ? e.depthExtent / e.meanRadius : 0.0, 2.0 * e.columnDepth);
+    double wanted = std::max(e.meanRadius > 0.0 ? e.depthExtent / e.meanRadius : 0.0, 2.0 * e.columnDepth);
+    // A point or spot light among the particles (some reach behind its near plane): the medium
+    // nearest the lamp, where 1/d² weights its transmittance most, is seen through the first slices,
+    // and linear interpolation across a slice one radius deep misses how τ grows there (a dense cloud
+    // around a lamp: 12.5 % rel-RMSE at the automatic 4–12 slices, 9.0 % at 16). Half the spacing.
+    if (view.perspective && nearest <= static_cast<double>(view.depthNear)) wanted *= 2.0;
     const int rounded = 4 * static_cast<int>(std::ceil(std::min(wanted, static_cast<double>(kMaxSlices)) / 4.0));
     e.slices = std::clamp(rounded, kMinSlices, kMaxSlices);
     return e;
