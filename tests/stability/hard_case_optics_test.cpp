@@ -122,15 +122,16 @@ TEST_F(StabilityTest, LightPerpendicularToViewWithinBound) {
 // in front of the light" has to be clipped; at d = 0 the direction to the light is undefined.
 // What prevents it: shaders/media/light_slices.vert covers the whole view when the light is inside
 // or at a sphere; light_slices.frag starts perspective light rays at the light
-// (start = max(−h, −t_closest)); shaders/media/lighting.glsl kernelMeanInverseSquare averages 1/d²
-// over the kernel with u = u_l + b·tan φ (b ≥ 1e-4 R) instead of sampling the spike;
+// (start = max(−h, −t_closest)); shaders/media/local_light_segment.glsl integrates the light along
+// each particle's segment with u = u_l + b·tan φ (b ≥ 1e-4 R) instead of sampling the spike;
 // shaders/common/lights.glsl sampleLight and assets light_model.cpp sampleLight return zero
 // irradiance within 1e-9 m of the light; light_views.cpp perspectiveView keeps znear > 0.
 // The reference's value near the light was checked independently (a 40000-point integral in the
 // tan-substitution of one pixel's ray: 2.021 + 0.016 ambient against the reference's 2.037); where
 // rays pass within millimetres of the light the reference itself fails (reference_near_light_test).
-// Bound: 15%. Measured: particles 9.0% (178% before 213e2c7 put the cone inside the kernel
-// average), blocks 110% — beyond the bound, see the DISABLED_ test.
+// Bound: 15%. Measured: particles 3.6% (9.0% with the light averaged over the kernel and applied
+// at one point per particle; 178% before 213e2c7 put the cone inside that average), blocks 110% —
+// beyond the bound, see the DISABLED_ test.
 const HardCase kSpotInCloud{.name = "spot_in_cloud", .scene = "spot_in_cloud.gltf"};
 
 TEST_F(StabilityTest, SpotLightInsideCloudStaysFinite) { expectFiniteAndClean(kSpotInCloud, runCase(context(), kSpotInCloud)); }
@@ -139,9 +140,9 @@ TEST_F(StabilityTest, SpotLightInsideCloudParticlesWithinBound) {
 }
 // DISABLED (finding for blocks mode): pixels whose rays pass near the spot light are close to the
 // background (pixel (46, 21) at 96×54: 0.016 against 2.04). A block is shaded at one point
-// (block_composite.frag mediumSource at t_shade, with the block's mean radius), so the light's 1/d²
-// peak along the ray, which particles mode averages per particle (lighting.glsl
-// kernelMeanAttenuation), is missed altogether.
+// (block_composite.frag blockSegmentSource at t_shade, with the block's mean radius), so the light's 1/d²
+// peak along the ray, which particles mode integrates per particle (local_light_segment.glsl), is
+// missed altogether.
 TEST_F(StabilityTest, DISABLED_SpotLightInsideCloudBlocksWithinBound) {
     expectWithinBound(kSpotInCloud, runCase(context(), kSpotInCloud), MediaMode::Blocks, kDefaultErrorBound);
 }
