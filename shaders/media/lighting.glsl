@@ -118,6 +118,7 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
     vec3 p = origin + dir * (c.tClosest + u);
     vec3 scattered = frame.ambient.rgb;
     for (int i = 0; i < frame.counts.x; ++i) {
+#ifdef MEDIA_LOCAL_LIGHTS  // particle_pass.cpp builds this only for frames with point or spot lights
         if (lights[i].direction.w > 0.5) {
             vec2 lit = spotConeInterval(i, origin, dir, c, lo, hi);
             if (!(lit.y > lit.x)) continue;  // the ray misses the cone inside this particle
@@ -137,6 +138,7 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
                 continue;
             }
         }
+#endif
         float visibility = lights[i].spot.z >= 0.0 ? segmentVisibility(i, origin, dir, c, radius, lo, hi, u, radius / 3.0) : 1.0;
         scattered += scatteredLight(i, p, dir, particle, visibility);
     }

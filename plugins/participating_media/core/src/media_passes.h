@@ -57,7 +57,12 @@ public:
                                bool softParticles, const MediaTarget& target);
 
 private:
-    gpu::Program program_;
+    // Two builds of one shader: with MEDIA_LOCAL_LIGHTS (point/spot lights integrated along each
+    // segment, local_light_segment.glsl), compiled on first need, and without, for frames lit by
+    // directional lights only. llvmpipe runs both sides of a branch under masks, so the lamp code
+    // costs a sunlit frame +43 % even where no lamp exists.
+    gpu::Program sunOnlyProgram_;
+    gpu::Program localLightsProgram_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

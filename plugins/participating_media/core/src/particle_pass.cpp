@@ -3,6 +3,8 @@
 // multiplied by 1 − α per particle), so the compose pass needs no extra state.
 #include "media_passes.h"
 
+#include <algorithm>
+
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/render/frame_data.h"
 
@@ -11,7 +13,7 @@ namespace nimbus::media {
 inline constexpr GLuint kShadowDepthUnit = 4;
 
 ParticlePass::ParticlePass() {
-    program_ = gpu::compileProgram({.vertex = "media/particles.vert", .fragment = "media/particles.frag"});
+    sunOnlyProgram_ = gpu::compileProgram({.vertex = "media/particles.vert", .fragment = "media/particles.frag"});
 }
 
 render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::FrameContext& context,
@@ -20,6 +22,12 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
         render::ResourceHandle media, depth, shadowMap, slices;
     };
     const int w = target.size.x, h = target.size.y;
+    const bool localLights = std::any_of(context.input.lights.begin(), context.input.lights.end(),
+                                         [](const assets::ResolvedLight& light) { return light.params.type != assets::LightType::Directional; });
+    if (localLights && !localLightsProgram_)
+        localLightsProgram_ = gpu::compileProgram(
+            {.vertex = "media/particles.vert", .fragment = "media/particles.frag", .defines = {"MEDIA_LOCAL_LIGHTS"}});
+    const gpu::Program& program = localLights ? localLightsProgram_ : sunOnlyProgram_;
     const auto& data = graph.addPass<Data>(
         "media_particles",
         [&](render::PassBuilder& builder, Data& d) {
@@ -28,7 +36,7 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
             if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
             if (context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
         },
-        [this, &context, &buffer, softParticles, w, h, scale = target.fullResScale](const render::PassResources& resources,
+        [this, &program, &context, &buffer, softParticles, w, h, scale = target.fullResScale](const render::PassResources& resources,
                                                                                        const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
@@ -38,7 +46,7 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
             const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // no radiance, full transmittance
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
 
-            glUseProgram(program_.id());
+            glUseProgram(program.id());
             context.frameData->bind();
             buffer.bindParticles();
             buffer.bindOrder();
@@ -46,8 +54,8 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
             glBindTextureUnit(render::kSceneDepthUnit, resources.id(d.depth));
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
-            glProgramUniform1i(program_.id(), 0, softParticles ? 1 : 0);
-            glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
+            glProgramUniform1i(program.id(), 0, softParticles ? 1 : 0);
+            glProgramUniform2f(program.id(), 1, scale.x, scale.y);
             glDisable(GL_DEPTH_TEST);  // the fragment shader clips against scene depth itself
             glDisable(GL_CULL_FACE);
             glEnable(GL_BLEND);
