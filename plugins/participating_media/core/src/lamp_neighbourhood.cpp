@@ -5,14 +5,17 @@
 
 namespace nimbus::media {
 
+bool anyLamp(const std::vector<assets::ResolvedLight>& lights) {
+    return std::any_of(lights.begin(), lights.end(), [](const assets::ResolvedLight& light) {
+        return light.params.type != assets::LightType::Directional;
+    });
+}
+
 void LampNeighbourhoods::find(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
                               const std::vector<std::uint32_t>& drawOrder) {
     lamps.assign(lights.size(), LampNeighbourhood{});
     neighbours.clear();
-    const bool anyLamp = std::any_of(lights.begin(), lights.end(), [](const assets::ResolvedLight& light) {
-        return light.params.type != assets::LightType::Directional;
-    });
-    if (!anyLamp) return;
+    if (!anyLamp(lights)) return;
     rank_.assign(particles.size(), 0u);
     for (std::size_t r = 0; r < drawOrder.size() && r < rank_.size(); ++r) rank_[drawOrder[r]] = static_cast<std::uint32_t>(r);
     for (std::size_t l = 0; l < lights.size(); ++l) {

@@ -20,6 +20,9 @@ namespace nimbus::media {
 inline constexpr GLuint kLampNeighbourhoodBinding = 8;
 inline constexpr std::size_t kMaxLampNeighbours = 128;
 
+// Whether any of `lights` is a point or spot light (a lamp, with a 1/d² peak).
+bool anyLamp(const std::vector<assets::ResolvedLight>& lights);
+
 // One lamp's entry in the buffer's header: its neighbours are entries [first, first + count).
 struct LampNeighbourhood {
     std::uint32_t first = 0;

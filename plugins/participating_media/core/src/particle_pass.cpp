@@ -3,8 +3,7 @@
 // multiplied by 1 − α per particle), so the compose pass needs no extra state.
 #include "media_passes.h"
 
-#include <algorithm>
-
+#include "lamp_neighbourhood.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/render/frame_data.h"
 
@@ -22,8 +21,7 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
         render::ResourceHandle media, depth, shadowMap, slices;
     };
     const int w = target.size.x, h = target.size.y;
-    const bool localLights = std::any_of(context.input.lights.begin(), context.input.lights.end(),
-                                         [](const assets::ResolvedLight& light) { return light.params.type != assets::LightType::Directional; });
+    const bool localLights = anyLamp(context.input.lights);
     if (localLights && !localLightsProgram_)
         localLightsProgram_ = gpu::compileProgram(
             {.vertex = "media/particles.vert", .fragment = "media/particles.frag", .defines = {"MEDIA_LOCAL_LIGHTS"}});
