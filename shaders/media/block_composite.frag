@@ -21,12 +21,12 @@ layout(binding = 7) uniform sampler2D uImpostorSums2;
 
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
 
-flat in int vBlock;
+flat in ivec2 vBlock;  // x: the block, y: its rank in the back-to-front order
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    BlockTile tile = blockTiles[vBlock];
+    BlockTile tile = blockTiles[vBlock.x];
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
     vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
     ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, true, tile, tileTexel(tile, ndc));
@@ -59,6 +59,7 @@ void main() {
     block.albedoSigma = vec4(s.sums1.yzw / s.tau, 0.0);
     block.emissionG = vec4(s.sums2.xyz / s.tau, clamp(s.sums2.w / s.tau, -0.999, 0.999));
     block.extra = vec4(0.0);
-    vec3 source = blockSegmentSource(origin, dir, s.front, max(end, s.front), tShade, block);
+    LayerOrder layer = LayerOrder(-1, vBlock.y, tSurface, 1e30);
+    vec3 source = blockSegmentSource(origin, dir, s.front, max(end, s.front), tShade, tau, block, layer);
     outColor = vec4(source * alpha, alpha);
 }

@@ -5,11 +5,11 @@
 
 layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
 
-flat out int vBlock;
+flat out ivec2 vBlock;  // x: the block, y: its rank in the back-to-front order
 
 void main() {
-    vBlock = int(drawOrder[gl_InstanceID]);
-    BlockTile tile = blockTiles[vBlock];
+    vBlock = ivec2(drawOrder[gl_InstanceID], gl_InstanceID);
+    BlockTile tile = blockTiles[vBlock.x];
     if (tile.atlas.z <= 0.0) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
         return;

@@ -3,34 +3,50 @@
 // lights, media/optics, particle_data.
 layout(std430, binding = 8) readonly buffer LampNeighbourhoods { uint lampWords[]; };  // uvec4 per light, then uvec2 per neighbour
 
-// Where a particle's layer stands in particles mode's compositing, and how its fragments clip.
+// Where a composited layer (a particle, or a block of them) stands, and how its fragments clip.
 struct LayerOrder {
-    int particle;   // its index
-    int rank;       // its place in the back-to-front draw order
+    int particle;   // its index (−1 for a block)
+    int rank;       // its place in the back-to-front draw order: listed neighbours of equal rank are its own
     float tEnd;     // the ray ends there (soft particles: at the opaque surface)
     float tHidden;  // a particle whose closest point lies beyond this is not drawn (classic billboards)
 };
 
 const int LAMP_NODES = 8;  // the points of local_light_segment.glsl's quadrature
 
+// Light `light`'s neighbour list: how many, where they start, and the reach within which it is complete.
+struct LampList {
+    uint count;
+    uint entries;
+    float reach;
+};
+
+LampList lampList(int light) {
+    uint header = 4u * uint(light);
+    return LampList(lampWords[header + 1u], 4u * uint(frame.counts.x) + 2u * lampWords[header],
+                    uintBitsToFloat(lampWords[header + 2u]));
+}
+
+// How far each point is inside the part of the reach ball where the list is trusted: 1 within
+// reach/2, fading to 0 at reach (so no ring marks where the list ends).
+float lampListWeight(LampList list, int light, vec3 x) {
+    return list.reach > 0.0 ? 1.0 - smoothstep(0.5 * list.reach, list.reach, distance(x, lights[light].position.xyz)) : 0.0;
+}
+
 // For light scattered at each ray parameter t[j], the log of the factor that turns the attenuation
 // compositing gives it into the exact e^−(optical depth in front of t): particles drawn after this
 // one dim it by all their mass (undo what lies behind t), particles drawn before by none of it
 // (apply what lies in front). Per point, not once per layer: the optical depth changes across a
 // lamp's peak, and e^x averaged is not e^(x averaged). Exact for the listed neighbours where their
-// list is complete, within `reach` of the lamp; faded out from reach/2 so that no ring marks where
-// the list ends.
+// list is complete, within `reach` of the lamp (lampListWeight).
 void lampOrderCorrection(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], LayerOrder layer,
                          out float logFactor[LAMP_NODES]) {
     for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] = 0.0;
-    uint header = 4u * uint(light);
-    uint count = lampWords[header + 1u];
-    if (count == 0u) return;
-    float reach = uintBitsToFloat(lampWords[header + 2u]);
-    uint entries = 4u * uint(frame.counts.x) + 2u * lampWords[header];
-    for (uint n = 0u; n < count; ++n) {
-        int q = int(lampWords[entries + 2u * n]);
-        if (q == layer.particle) continue;  // its own attenuation is already exact
+    LampList list = lampList(light);
+    if (list.count == 0u) return;
+    for (uint n = 0u; n < list.count; ++n) {
+        int rank = int(lampWords[list.entries + 2u * n + 1u]);
+        if (rank == layer.rank) continue;  // its own attenuation is already exact
+        int q = int(lampWords[list.entries + 2u * n]);
         vec4 pr = particles[q].positionRadius;
         Chord c = chordOf(origin, dir, pr.xyz, pr.w);
         if (c.halfChord <= 0.0 || c.tClosest > layer.tHidden) continue;
@@ -38,13 +54,59 @@ void lampOrderCorrection(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], 
         float u1 = min(layer.tEnd - c.tClosest, c.halfChord);
         if (u1 <= u0) continue;
         float sigma = particles[q].albedoSigma.w;
-        bool drawnAfter = int(lampWords[entries + 2u * n + 1u]) > layer.rank;
+        bool drawnAfter = rank > layer.rank;
         for (int j = 0; j < LAMP_NODES; ++j) {
             float split = clamp(t[j] - c.tClosest, u0, u1);
             logFactor[j] += drawnAfter ? sigma * chordIntegral(c, pr.w, split, u1) : -sigma * chordIntegral(c, pr.w, u0, split);
         }
     }
-    vec3 lamp = lights[light].position.xyz;
-    for (int j = 0; j < LAMP_NODES; ++j)
-        logFactor[j] *= 1.0 - smoothstep(0.5 * reach, reach, distance(origin + dir * t[j], lamp));
+    for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] *= lampListWeight(list, light, origin + dir * t[j]);
+}
+
+// Where the layer's own listed particles lie along the ray (their chords from the eye to
+// layer.tEnd); x > y when none does.
+vec2 lampLayerSpan(int light, vec3 origin, vec3 dir, LayerOrder layer) {
+    LampList list = lampList(light);
+    vec2 span = vec2(1e30, -1e30);
+    for (uint n = 0u; n < list.count; ++n) {
+        if (int(lampWords[list.entries + 2u * n + 1u]) != layer.rank) continue;
+        vec4 pr = particles[lampWords[list.entries + 2u * n]].positionRadius;
+        Chord c = chordOf(origin, dir, pr.xyz, pr.w);
+        float start = max(c.tClosest - c.halfChord, 0.0), end = min(c.tClosest + c.halfChord, layer.tEnd);
+        if (c.halfChord > 0.0 && end > start) span = vec2(min(span.x, start), max(span.y, end));
+    }
+    return span;
+}
+
+// The layer's own listed particles along the ray: their extinction σρ at each point, their optical
+// depth in front of it (from the eye, clipped at layer.tEnd as the impostor is), and their total.
+// A block assumes uniform density, which near a lamp puts mass where the block has none, or too
+// little where its particles crowd the lamp (3.5× too bright on a lamp at a cloud's edge); the
+// listed particles are exact there. `listed[j]`: how far each point lies where the list is
+// complete (lampListWeight), so where the block's other particles have no mass.
+float lampLayerMass(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], LayerOrder layer, out float extinction[LAMP_NODES],
+                    out float inFront[LAMP_NODES], out float listed[LAMP_NODES]) {
+    LampList list = lampList(light);
+    for (int j = 0; j < LAMP_NODES; ++j) {
+        extinction[j] = 0.0;
+        inFront[j] = 0.0;
+        listed[j] = lampListWeight(list, light, origin + dir * t[j]);
+    }
+    float total = 0.0;
+    for (uint n = 0u; n < list.count; ++n) {
+        if (int(lampWords[list.entries + 2u * n + 1u]) != layer.rank) continue;
+        GpuParticle q = particles[lampWords[list.entries + 2u * n]];
+        float radius = q.positionRadius.w, sigma = q.albedoSigma.w;
+        Chord c = chordOf(origin, dir, q.positionRadius.xyz, radius);
+        float u0 = max(-c.halfChord, -c.tClosest), u1 = min(c.halfChord, layer.tEnd - c.tClosest);
+        if (c.halfChord <= 0.0 || u1 <= u0) continue;
+        total += sigma * chordIntegral(c, radius, u0, u1);
+        float k = KERNEL_FALLOFF / (radius * radius);
+        for (int j = 0; j < LAMP_NODES; ++j) {
+            float u = t[j] - c.tClosest;
+            if (u > u0 && u < u1) extinction[j] += sigma * exp(-k * (c.b2 + u * u));
+            inFront[j] += sigma * chordIntegral(c, radius, u0, min(u, u1));
+        }
+    }
+    return total;
 }

@@ -5,7 +5,6 @@
 // transmittance, media/optics.
 #include "common/shadow_views.glsl"
 #include "media/lamp_neighbourhood.glsl"
-#include "media/local_light_segment.glsl"
 layout(binding = 4) uniform sampler2DArray uShadowDepth;  // the mesh shadow map, read as raw depth
 
 // Light-view depth stored in a shadow map texel (reversed Z), back to metres along the light axis.
@@ -63,6 +62,9 @@ float meshVisibilityTap(int lightIndex, vec3 p, float softness) {
     float occluder = shadowTexelDepth(v, texture(uShadowDepth, vec3(uv, v.params2.x)).r);
     return 0.5 * (1.0 + erfApprox((occluder - receiver) / (max(softness, 1e-4) * 1.41421356)));
 }
+
+// After meshVisibilityTap, which the lamp integration uses per node.
+#include "media/local_light_segment.glsl"
 
 // Light i scattered towards the camera at p, per unit optical depth and albedo: p(θ) E V T, all
 // taken at p. `visibility` ≥ 0 replaces the mesh visibility at p (see segmentVisibility).
@@ -131,8 +133,7 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
                 // The depth softness stands for the mass around a tap; here the light comes from
                 // within about the lamp's distance of J.y, not from the whole kernel (R/3 darkened the
                 // medium above a lit floor by up to 25 % around a lamp inside a particle).
-                float softness = min(radius / 3.0, distance(origin + dir * (c.tClosest + J.y), lights[i].position.xyz));
-                float visibility = lights[i].spot.z >= 0.0 ? segmentVisibility(i, origin, dir, c, radius, lo, hi, J.y, softness) : 1.0;
+                float visibility = lights[i].spot.z >= 0.0 && !nearLamp ? segmentVisibility(i, origin, dir, c, radius, lo, hi, J.y, radius / 3.0) : 1.0;
                 float transmittance = nearLamp ? 1.0 : exp(-mediumOpticalDepth(i, origin + dir * (c.tClosest + J.y)));
                 scattered += lights[i].radiance.rgb * (J.x * visibility * transmittance);
                 continue;
@@ -164,13 +165,28 @@ float uniformSegmentVisibility(int i, vec3 origin, vec3 dir, float t0, float t1,
     return clamp(firstHalf ? (vLo > 0.5 ? before : 1.0 - before) : (vHi > 0.5 ? 1.0 - before : before), 0.0, 1.0);
 }
 
-// The source of a block's visible segment [t0, t1] (uniform density inside a block): every light
-// at the shading point t, with the mesh visibility taken over the segment.
-vec3 blockSegmentSource(vec3 origin, vec3 dir, float t0, float t1, float t, GpuParticle block) {
+// The source of a block's visible segment [t0, t1] of optical depth τ (uniform density inside a
+// block): every light at the shading point t, with the mesh visibility taken over the segment,
+// except point and spot lights near the segment or whose cone's edge crosses it: those are
+// integrated over it as in segmentSource (1/d² across a block spans far more than across one
+// particle: one shading point missed a lamp's glow by up to 95 %).
+vec3 blockSegmentSource(vec3 origin, vec3 dir, float t0, float t1, float t, float tau, GpuParticle block, LayerOrder layer) {
     vec3 p = origin + dir * t;
     vec3 scattered = frame.ambient.rgb;
+    float radius = block.positionRadius.w;
     for (int i = 0; i < frame.counts.x; ++i) {
-        float visibility = lights[i].spot.z >= 0.0 ? uniformSegmentVisibility(i, origin, dir, t0, t1, t, block.positionRadius.w / 3.0) : 1.0;
+#ifdef MEDIA_LOCAL_LIGHTS  // block_composite_pass.cpp builds this only for frames with point or spot lights
+        if (lights[i].direction.w > 0.5) {
+            float tNearest = clamp(dot(lights[i].position.xyz - origin, dir), t0, t1);
+            bool nearLamp = distance(origin + dir * tNearest, lights[i].position.xyz) < (t1 - t0) + 2.0 * radius;
+            vec2 lit = spotConeInterval(i, origin, dir, Chord(0.0, 0.0, 0.0), t0, t1);
+            if (nearLamp || lit.x > t0 || lit.y < t1) {
+                scattered += lights[i].radiance.rgb * uniformLocalLightSegment(origin, dir, t0, t1, tau, i, block, layer);
+                continue;
+            }
+        }
+#endif
+        float visibility = lights[i].spot.z >= 0.0 ? uniformSegmentVisibility(i, origin, dir, t0, t1, t, radius / 3.0) : 1.0;
         scattered += scatteredLight(i, p, dir, block, visibility);
     }
     return block.albedoSigma.rgb * scattered + block.emissionG.rgb;

@@ -6,7 +6,7 @@
 //  - a spot cone's edge crossing a particle lights part of its segment only.
 // Both become smooth once the segment is cut to the cone and u = u_l + b·tan φ (u_l the lamp's
 // closest approach, b its distance): ∫ f(u)/d² du = (1/b) ∫ f dφ, which Gauss–Legendre handles.
-// Needs lights, transmittance, media/optics, media/lamp_neighbourhood.
+// Needs lights, transmittance, media/optics, media/lamp_neighbourhood and meshVisibilityTap (lighting.glsl).
 
 // The part [a, b] of [lo, hi] (u from the chord's closest point) inside light i's cone: all of it
 // for a point light, b < a when the ray misses the cone. The forward nappe is convex, so the inside
@@ -44,50 +44,99 @@ vec2 spotConeInterval(int i, vec3 origin, vec3 dir, Chord c, float lo, float hi)
     return vec2(a, b);
 }
 
+// The nodes of ∫ f(t)/d(t)² dt over [a, b] = lit for light i: Gauss–Legendre in φ with
+// t = t_l + b·tan φ (t_l the lamp's closest approach along the ray, b its distance). Fills the ray
+// parameters t[j] and weights w[j] (Jacobian included: Σ w_j f(t_j) ≈ the integral); false when the
+// interval is empty. `scale`: a length below which b is not resolved (a lamp exactly on the ray).
+bool lampQuadrature(int i, vec3 origin, vec3 dir, vec2 lit, float scale, out float t[LAMP_NODES], out float w[LAMP_NODES]) {
+    vec3 toLight = lights[i].position.xyz - origin;
+    float tLight = dot(toLight, dir);
+    float b = max(length(toLight - tLight * dir), 1e-4 * scale);
+    float phi0 = atan((lit.x - tLight) / b), phi1 = atan((lit.y - tLight) / b);
+    const float nodes[4] = float[](0.1834346425, 0.5255324099, 0.7966664774, 0.9602898565);
+    const float weights[4] = float[](0.3626837834, 0.3137066459, 0.2223810345, 0.1012285363);
+    float mid = 0.5 * (phi0 + phi1), half_ = 0.5 * (phi1 - phi0);
+    for (int j = 0; j < LAMP_NODES; ++j) {
+        t[j] = tLight + b * tan(mid + float(j % 2 == 0 ? -1 : 1) * half_ * nodes[j / 2]);
+        w[j] = weights[j / 2] * half_ / b;
+    }
+    return phi1 > phi0;
+}
+
+// The mesh visibility of lamp i at x, one shadow tap per quadrature node. Near a lamp the light
+// comes from within about its distance of the ray, not from a whole kernel: a tap softened over the
+// kernel's depth (R/3) let a lamp 3 cm under a plate light the medium above it at 30 %. The depth
+// softness left, a tenth of the distance, stays above a cube-map texel's footprint at grazing slopes.
+float lampMeshVisibility(int i, vec3 x) {
+    return lights[i].spot.z >= 0.0 ? meshVisibilityTap(i, x, 0.1 * distance(x, lights[i].position.xyz)) : 1.0;
+}
+
 // Light i scattered by the particle's segment [lo, hi] towards the camera, as the source J of the
 // composited layer (the layer adds α·J, α = 1 − e^−τ over the segment):
 //   J = (σ/α) ∫ ρ(u) e^−τs(u) p(θ(u)) E(u) T(u) du over the lit part [a, b],
 // τs the particle's own optical depth in front of u, T the light's transmittance through the
-// medium, E the light's irradiance (shape/d²). Mesh visibility is left to the caller, at the
-// returned u (x: J per unit albedo and radiance, y: where the integrand is centred). Near the lamp
-// (`nearLamp`) T is read from the slices at every node and the other layers' attenuation is made
-// exact (lamp_neighbourhood.glsl); further away both vary slowly over one particle and the caller
-// applies T once.
+// medium, E the light's irradiance (shape/d²); x: J per unit albedo and radiance, y: where the
+// integrand is centred. Near the lamp (`nearLamp`) T and the mesh visibility are taken at every
+// node and the other layers' attenuation is made exact (lamp_neighbourhood.glsl); further away
+// all three vary slowly over one particle and the caller applies them once, at y.
 vec2 localLightSegment(vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, vec2 lit, int i,
                        GpuParticle particle, bool nearLamp, LayerOrder layer) {
-    vec3 lightPos = lights[i].position.xyz;
-    vec3 toLight = lightPos - origin;
-    float tLight = dot(toLight, dir);
-    float b = max(length(toLight - tLight * dir), 1e-4 * radius);
-    float uLight = tLight - c.tClosest;
-    float phi0 = atan((lit.x - uLight) / b), phi1 = atan((lit.y - uLight) / b);
     float sigma = particle.albedoSigma.w;
-    float tau = sigma * chordIntegral(c, radius, lo, hi);
-    float alpha = oneMinusExpNeg(tau);
-    if (!(alpha > 0.0) || !(phi1 > phi0)) return vec2(0.0, 0.5 * (lit.x + lit.y));
+    float alpha = oneMinusExpNeg(sigma * chordIntegral(c, radius, lo, hi));
+    float t[LAMP_NODES], f[LAMP_NODES];
+    if (!(alpha > 0.0) || !lampQuadrature(i, origin, dir, lit + c.tClosest, radius, t, f))
+        return vec2(0.0, 0.5 * (lit.x + lit.y));
     float k = KERNEL_FALLOFF / (radius * radius);
-    const float nodes[4] = float[](0.1834346425, 0.5255324099, 0.7966664774, 0.9602898565);
-    const float weights[4] = float[](0.3626837834, 0.3137066459, 0.2223810345, 0.1012285363);
-    float mid = 0.5 * (phi0 + phi1), half_ = 0.5 * (phi1 - phi0);
-    float u[LAMP_NODES], f[LAMP_NODES], t[LAMP_NODES];
+    vec3 lightPos = lights[i].position.xyz;
     for (int j = 0; j < LAMP_NODES; ++j) {
-        u[j] = uLight + b * tan(mid + float(j % 2 == 0 ? -1 : 1) * half_ * nodes[j / 2]);
-        t[j] = c.tClosest + u[j];
+        float u = t[j] - c.tClosest;
         vec3 x = origin + dir * t[j];
-        f[j] = weights[j / 2] * exp(-k * (c.b2 + u[j] * u[j])) * lightShape(i, x);
+        f[j] *= exp(-k * (c.b2 + u * u)) * lightShape(i, x);
         if (f[j] <= 0.0) continue;
-        f[j] *= exp(-sigma * chordIntegral(c, radius, lo, u[j]));
+        f[j] *= exp(-sigma * chordIntegral(c, radius, lo, u));
         f[j] *= phaseValue(particle.extra.x, particle.emissionG.w, normalize(lightPos - x), dir);
-        if (nearLamp) f[j] *= exp(-mediumOpticalDepth(i, x));
+        if (nearLamp) f[j] *= exp(-mediumOpticalDepth(i, x)) * lampMeshVisibility(i, x);
     }
     float logFactor[LAMP_NODES];
     if (nearLamp) lampOrderCorrection(i, origin, dir, t, layer, logFactor);
-    float sum = 0.0, weightedU = 0.0;
+    float sum = 0.0, weightedT = 0.0;
     for (int j = 0; j < LAMP_NODES; ++j) {
         float w = nearLamp ? f[j] * exp(logFactor[j]) : f[j];
         sum += w;
-        weightedU += w * u[j];
+        weightedT += w * t[j];
     }
-    float J = sigma * half_ * sum / (b * alpha);
-    return vec2(J, sum > 0.0 ? clamp(weightedU / sum, lo, hi) : clamp(uLight, lo, hi));
+    float uCentre = sum > 0.0 ? weightedT / sum - c.tClosest : 0.5 * (lit.x + lit.y);
+    return vec2(sigma * sum / alpha, clamp(uCentre, lo, hi));
+}
+
+// The same for a block's visible segment [t0, t1] (ray parameters) of optical depth τ. A block
+// assumes uniform density inside (seed 000 §2.4), but a lamp's peak weighs the density right at the
+// lamp, so the block's own particles listed around the lamp (lamp_neighbourhood.glsl) give their
+// exact extinction and attenuation, over their whole chords (a block's [front, back] covers only
+// ±√3·R/3 of each particle), the rest of its optical depth is spread uniformly over [t0, t1]
+// outside the list's ball, and the other blocks' attenuation is made exact there as in particles
+// mode. T is read at every node: a block spans many particles, so the light's transmittance
+// changes across the segment. Returns J.
+float uniformLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float tau, int i, GpuParticle block, LayerOrder layer) {
+    float alpha = oneMinusExpNeg(tau);
+    if (!(alpha > 0.0) || !(t1 > t0)) return 0.0;
+    vec2 span = lampLayerSpan(i, origin, dir, layer);
+    vec2 lit = spotConeInterval(i, origin, dir, Chord(0.0, 0.0, 0.0), min(t0, span.x), max(t1, span.y));
+    float t[LAMP_NODES], f[LAMP_NODES];
+    if (!lampQuadrature(i, origin, dir, lit, t1 - t0, t, f)) return 0.0;
+    float extinction[LAMP_NODES], inFront[LAMP_NODES], listed[LAMP_NODES], logFactor[LAMP_NODES];
+    float rest = max(tau - lampLayerMass(i, origin, dir, t, layer, extinction, inFront, listed), 0.0) / (t1 - t0);
+    lampOrderCorrection(i, origin, dir, t, layer, logFactor);
+    vec3 lightPos = lights[i].position.xyz;
+    float sum = 0.0;
+    for (int j = 0; j < LAMP_NODES; ++j) {
+        vec3 x = origin + dir * t[j];
+        bool inBlock = t[j] >= t0 && t[j] <= t1;
+        f[j] *= lightShape(i, x) * (extinction[j] + (inBlock ? (1.0 - listed[j]) * rest : 0.0));
+        if (f[j] <= 0.0) continue;
+        float ownInFront = inFront[j] + rest * clamp(t[j] - t0, 0.0, t1 - t0);
+        f[j] *= exp(logFactor[j] - ownInFront - mediumOpticalDepth(i, x)) * lampMeshVisibility(i, x);
+        sum += f[j] * phaseValue(block.extra.x, block.emissionG.w, normalize(lightPos - x), dir);
+    }
+    return sum / alpha;
 }

@@ -23,18 +23,18 @@ ParticleSet particlesAt(const std::vector<glm::dvec3>& centres, float radius) {
     return set;
 }
 
-std::vector<std::uint32_t> identityOrder(std::size_t n) {
-    std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    return order;
+std::vector<std::uint32_t> identityRanks(std::size_t n) {
+    std::vector<std::uint32_t> ranks(n);
+    std::iota(ranks.begin(), ranks.end(), 0u);
+    return ranks;
 }
 
 TEST(LampNeighbourhoods, ListsTheParticlesWithinReachWithTheirDrawRank) {
     // Particle 0 contains the lamp (reach = its radius 1); 1 reaches within 1 of the lamp; 2 does not.
     const ParticleSet set = particlesAt({{0.2, 0.0, 0.0}, {1.5, 0.0, 0.0}, {5.0, 0.0, 0.0}}, 1.0f);
-    const std::vector<std::uint32_t> drawOrder{2, 0, 1};  // back to front: 2 first, then 0, then 1
+    const std::vector<std::uint32_t> ranks{1, 2, 0};  // back to front: 2 first, then 0, then 1
     LampNeighbourhoods n;
-    n.find(set, {lamp(assets::LightType::Point, {0.0, 0.0, 0.0})}, drawOrder);
+    n.find(set, {lamp(assets::LightType::Point, {0.0, 0.0, 0.0})}, ranks, LampsListed::InsideMedium);
     ASSERT_EQ(n.lamps.size(), 1u);
     EXPECT_FLOAT_EQ(n.lamps[0].reach, 1.0f);
     ASSERT_EQ(n.lamps[0].count, 2u);
@@ -51,7 +51,7 @@ TEST(LampNeighbourhoods, KeepsEachLampsEntriesApartAndInLightOrder) {
     n.find(set,
            {lamp(assets::LightType::Spot, {10.0, 0.0, 0.0}), lamp(assets::LightType::Directional, {}),
             lamp(assets::LightType::Point, {0.0, 0.0, 0.0})},
-           identityOrder(2));
+           identityRanks(2), LampsListed::InsideMedium);
     ASSERT_EQ(n.lamps.size(), 3u);
     EXPECT_EQ(n.lamps[0].count, 1u);
     EXPECT_EQ(n.neighbours[n.lamps[0].first].x, 1u);
@@ -63,10 +63,21 @@ TEST(LampNeighbourhoods, KeepsEachLampsEntriesApartAndInLightOrder) {
 TEST(LampNeighbourhoods, ListsNothingForALampOutsideTheMedium) {
     const ParticleSet set = particlesAt({{0.0, 0.0, 0.0}}, 1.0f);
     LampNeighbourhoods n;
-    n.find(set, {lamp(assets::LightType::Point, {1.5, 0.0, 0.0})}, identityOrder(1));
+    n.find(set, {lamp(assets::LightType::Point, {1.5, 0.0, 0.0})}, identityRanks(1), LampsListed::InsideMedium);
     ASSERT_EQ(n.lamps.size(), 1u);
     EXPECT_EQ(n.lamps[0].count, 0u);
     EXPECT_TRUE(n.neighbours.empty());
+}
+
+TEST(LampNeighbourhoods, GivesALampOutsideTheMediumTheNearestParticlesRadiusWhenAllAreListed) {
+    // Blocks mode: the reach ball of a lamp outside the medium is empty or nearly, and that is known.
+    const ParticleSet set = particlesAt({{0.0, 0.0, 0.0}, {6.0, 0.0, 0.0}}, 1.0f);
+    LampNeighbourhoods n;
+    n.find(set, {lamp(assets::LightType::Point, {1.8, 0.0, 0.0})}, {7, 3}, LampsListed::All);
+    ASSERT_EQ(n.lamps.size(), 1u);
+    EXPECT_FLOAT_EQ(n.lamps[0].reach, 1.0f);
+    ASSERT_EQ(n.lamps[0].count, 1u);  // particle 0 (gap 0.8) reaches into the ball; 1 (gap 3.2) does not
+    EXPECT_EQ(n.neighbours[n.lamps[0].first], glm::uvec2(0u, 7u));
 }
 
 TEST(LampNeighbourhoods, KeepsTheClosestWhenMoreThanTheCapOverlap) {
@@ -75,7 +86,7 @@ TEST(LampNeighbourhoods, KeepsTheClosestWhenMoreThanTheCapOverlap) {
     for (std::size_t i = 0; i < kMaxLampNeighbours + 40; ++i) centres.push_back({0.001 * static_cast<double>(i), 0.0, 0.0});
     const ParticleSet set = particlesAt(centres, 1.0f);
     LampNeighbourhoods n;
-    n.find(set, {lamp(assets::LightType::Point, {0.0, 0.0, 0.0})}, identityOrder(set.size()));
+    n.find(set, {lamp(assets::LightType::Point, {0.0, 0.0, 0.0})}, identityRanks(set.size()), LampsListed::InsideMedium);
     ASSERT_EQ(n.lamps[0].count, kMaxLampNeighbours);
     for (std::uint32_t k = 0; k < n.lamps[0].count; ++k) EXPECT_LT(n.neighbours[n.lamps[0].first + k].x, kMaxLampNeighbours);
 }
@@ -83,7 +94,7 @@ TEST(LampNeighbourhoods, KeepsTheClosestWhenMoreThanTheCapOverlap) {
 TEST(LampNeighbourhoods, DoesNothingWithoutPointOrSpotLights) {
     const ParticleSet set = particlesAt({{0.0, 0.0, 0.0}}, 1.0f);
     LampNeighbourhoods n;
-    n.find(set, {lamp(assets::LightType::Directional, {})}, identityOrder(1));
+    n.find(set, {lamp(assets::LightType::Directional, {})}, identityRanks(1), LampsListed::InsideMedium);
     ASSERT_EQ(n.lamps.size(), 1u);
     EXPECT_EQ(n.lamps[0].count, 0u);
     EXPECT_TRUE(n.neighbours.empty());

@@ -10,9 +10,8 @@ namespace nimbus::media {
 inline constexpr GLuint kShadowDepthUnit = 4;
 inline constexpr GLuint kImpostorDepthsUnit = 5;
 
-BlockCompositePass::BlockCompositePass() {
-    program_ = gpu::compileProgram({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"});
-}
+BlockCompositePass::BlockCompositePass()
+    : programs_({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"}) {}
 
 render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
                                                const std::vector<std::uint32_t>& backToFront, const BlockGpuBuffers& blocks,
@@ -37,6 +36,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
         render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2;
     };
     const int w = target.size.x, h = target.size.y;
+    const gpu::Program& program = programs_.forLights(context.input.lights);
     const auto& data = graph.addPass<Composite>(
         "media_blocks",
         [&](render::PassBuilder& builder, Composite& d) {
@@ -48,7 +48,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.sums1 = builder.read(made.sums1);
             d.sums2 = builder.read(made.sums2);
         },
-        [this, &context, &backToFront, &blocks, w, h, scale = target.fullResScale](const render::PassResources& r,
+        [this, &program, &context, &backToFront, &blocks, &particles, w, h, scale = target.fullResScale](const render::PassResources& r,
                                                                                             const Composite& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
@@ -57,10 +57,12 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glViewport(0, 0, w, h);
             const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
-            glUseProgram(program_.id());
-            glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
+            glUseProgram(program.id());
+            glProgramUniform2f(program.id(), 1, scale.x, scale.y);
             context.frameData->bind();
             blocks.bind(0);
+            particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
+            particles.bindLampNeighbourhoods();
             glBindTextureUnit(render::kSceneDepthUnit, r.id(d.depth));
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, r.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, r.id(d.slices));

@@ -90,7 +90,7 @@ public:
                                const MediaTarget& target);
 
 private:
-    gpu::Program program_;
+    LocalLightPrograms programs_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

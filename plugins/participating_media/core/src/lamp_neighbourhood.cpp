@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace nimbus::media {
 
@@ -12,22 +13,24 @@ bool anyLamp(const std::vector<assets::ResolvedLight>& lights) {
 }
 
 void LampNeighbourhoods::find(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
-                              const std::vector<std::uint32_t>& drawOrder) {
+                              const std::vector<std::uint32_t>& rankOf, LampsListed which) {
     lamps.assign(lights.size(), LampNeighbourhood{});
     neighbours.clear();
     if (!anyLamp(lights)) return;
-    rank_.assign(particles.size(), 0u);
-    for (std::size_t r = 0; r < drawOrder.size() && r < rank_.size(); ++r) rank_[drawOrder[r]] = static_cast<std::uint32_t>(r);
     for (std::size_t l = 0; l < lights.size(); ++l) {
         if (lights[l].params.type == assets::LightType::Directional) continue;
         const glm::dvec3 lamp = lights[l].position;
-        double largestContaining = 0.0;
+        double largestContaining = 0.0, nearestGap = std::numeric_limits<double>::infinity(), nearestRadius = 0.0;
         for (std::size_t i = 0; i < particles.size(); ++i) {
-            if (glm::length(particles.position[i] - lamp) < particles.radius[i])
-                largestContaining = std::max(largestContaining, static_cast<double>(particles.radius[i]));
+            const double gap = glm::length(particles.position[i] - lamp) - particles.radius[i];
+            if (gap < 0.0) largestContaining = std::max(largestContaining, static_cast<double>(particles.radius[i]));
+            if (gap < nearestGap) {
+                nearestGap = gap;
+                nearestRadius = particles.radius[i];
+            }
         }
-        if (largestContaining <= 0.0) continue;
-        const double reach = largestContaining;
+        const double reach = largestContaining > 0.0 || which == LampsListed::InsideMedium ? largestContaining : nearestRadius;
+        if (reach <= 0.0) continue;
         candidates_.clear();
         for (std::size_t i = 0; i < particles.size(); ++i) {
             const double distance = glm::length(particles.position[i] - lamp);
@@ -41,7 +44,7 @@ void LampNeighbourhoods::find(const ParticleSet& particles, const std::vector<as
         entry.first = static_cast<std::uint32_t>(neighbours.size());
         entry.count = static_cast<std::uint32_t>(candidates_.size());
         entry.reach = static_cast<float>(reach);
-        for (const auto& [key, index] : candidates_) neighbours.emplace_back(index, rank_[index]);
+        for (const auto& [key, index] : candidates_) neighbours.emplace_back(index, index < rankOf.size() ? rankOf[index] : 0u);
     }
 }
 

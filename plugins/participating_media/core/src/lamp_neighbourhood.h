@@ -30,22 +30,30 @@ struct LampNeighbourhood {
     float reach = 0.0f;  // the correction applies within `reach` of the lamp, fading out from reach/2
 };
 
+// Which lamps get a neighbourhood.
+enum class LampsListed {
+    // Lamps inside the medium (particles mode: outside it, compositing order gets the peak right).
+    InsideMedium,
+    // Every lamp near the medium (blocks mode: a block's uniform density is wrong near any lamp).
+    // A lamp outside every particle gets the radius of the particle nearest it as reach.
+    All,
+};
+
 // The neighbourhoods of `lights`, in their order: for a lamp inside the medium, reach is the
 // largest radius of the particles containing it, and the neighbours are the particles whose sphere
 // comes within reach of it (so any particle containing a point within reach is listed), each with
-// its rank in `drawOrder`. Lamps outside every particle get no neighbours; a frame without point or
-// spot lights does no work.
+// its layer's rank (`rankOf[particle]`: its place in the back-to-front draw order, or its block's).
+// A frame without point or spot lights does no work.
 class LampNeighbourhoods {
 public:
     // Recomputes everything; storage is reused, so steady frames allocate nothing.
     void find(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
-              const std::vector<std::uint32_t>& drawOrder);
+              const std::vector<std::uint32_t>& rankOf, LampsListed which);
 
     std::vector<LampNeighbourhood> lamps;
-    std::vector<glm::uvec2> neighbours;  // x: particle index, y: draw rank
+    std::vector<glm::uvec2> neighbours;  // x: particle index, y: its layer's rank
 
 private:
-    std::vector<std::uint32_t> rank_;
     std::vector<std::pair<double, std::uint32_t>> candidates_;
 };
 

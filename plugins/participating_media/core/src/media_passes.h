@@ -5,6 +5,7 @@
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/media/media_renderer.h"
 #include "nimbus/render/frame_graph.h"
+#include "local_light_programs.h"
 #include "particle_buffer.h"
 
 namespace nimbus::media {
@@ -57,12 +58,7 @@ public:
                                bool softParticles, const MediaTarget& target);
 
 private:
-    // Two builds of one shader: with MEDIA_LOCAL_LIGHTS (point/spot lights integrated along each
-    // segment, local_light_segment.glsl), compiled on first need, and without, for frames lit by
-    // directional lights only. llvmpipe runs both sides of a branch under masks, so the lamp code
-    // costs a sunlit frame +43 % even where no lamp exists.
-    gpu::Program sunOnlyProgram_;
-    gpu::Program localLightsProgram_;
+    LocalLightPrograms programs_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

@@ -20,6 +20,7 @@ struct BlockFrame {
     std::vector<BlockViewPlan> lightPlans;  // one per slice view
     BlockViewPlan cameraPlan;
     std::vector<std::uint32_t> backToFront;
+    std::vector<std::uint32_t> blockRankOf;  // per particle: its block's place in backToFront
 };
 
 namespace {
@@ -93,6 +94,14 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
             for (const BlockViewPlan& plan : frame.lightPlans) plans.push_back(&plan);
             blockBuffers_->uploadTileSets(plans);
             blockBuffers_->uploadDrawOrder(frame.backToFront);
+            if (!anyLamp(context.input.lights)) return;
+            frame.blockRankOf.assign(particles_->size(), 0u);
+            for (std::size_t r = 0; r < frame.backToFront.size(); ++r) {
+                const Block& block = frame.partition.blocks[frame.backToFront[r]];
+                for (std::uint32_t k = block.first; k < block.first + block.count; ++k)
+                    frame.blockRankOf[frame.partition.order[k]] = static_cast<std::uint32_t>(r);
+            }
+            buffer_->uploadLampNeighbourhoods(*particles_, context.input.lights, frame.blockRankOf, LampsListed::All);
         });
 
     const int resolution = settings_.sliceResolution > 0 ? settings_.sliceResolution : 256;

@@ -44,7 +44,14 @@ void ParticleGpuBuffer::sortBackToFront(const ParticleSet& p, const render::View
 }
 
 void ParticleGpuBuffer::uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights) {
-    lamps_.find(particles, lights, order_cpu_);
+    rank_.assign(particles.size(), 0u);
+    for (std::size_t r = 0; r < order_cpu_.size() && r < rank_.size(); ++r) rank_[order_cpu_[r]] = static_cast<std::uint32_t>(r);
+    uploadLampNeighbourhoods(particles, lights, rank_, LampsListed::InsideMedium);
+}
+
+void ParticleGpuBuffer::uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
+                                                 const std::vector<std::uint32_t>& rankOf, LampsListed which) {
+    lamps_.find(particles, lights, rankOf, which);
     lampBuffer_.upload(lamps_);
 }
 

@@ -29,6 +29,9 @@ public:
 
     // After sorting: the particles around each point/spot light, with their draw ranks (particles mode).
     void uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights);
+    // The same with each particle's layer rank given (blocks mode: its block's place in the draw order).
+    void uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
+                                  const std::vector<std::uint32_t>& rankOf, LampsListed which);
 
     void bindParticles() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticlesBinding, particles_.id()); }
     void bindOrder() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDrawOrderBinding, order_.id()); }
@@ -41,6 +44,7 @@ private:
     std::vector<GpuParticle> staging_;
     std::vector<std::uint32_t> order_cpu_;
     std::vector<float> keys_;
+    std::vector<std::uint32_t> rank_;
     LampNeighbourhoods lamps_;
     LampNeighbourhoodBuffer lampBuffer_;
 };

@@ -11,9 +11,7 @@ namespace nimbus::media {
 
 inline constexpr GLuint kShadowDepthUnit = 4;
 
-ParticlePass::ParticlePass() {
-    sunOnlyProgram_ = gpu::compileProgram({.vertex = "media/particles.vert", .fragment = "media/particles.frag"});
-}
+ParticlePass::ParticlePass() : programs_({.vertex = "media/particles.vert", .fragment = "media/particles.frag"}) {}
 
 render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::FrameContext& context,
                                          const ParticleGpuBuffer& buffer, bool softParticles, const MediaTarget& target) {
@@ -21,11 +19,7 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
         render::ResourceHandle media, depth, shadowMap, slices;
     };
     const int w = target.size.x, h = target.size.y;
-    const bool localLights = anyLamp(context.input.lights);
-    if (localLights && !localLightsProgram_)
-        localLightsProgram_ = gpu::compileProgram(
-            {.vertex = "media/particles.vert", .fragment = "media/particles.frag", .defines = {"MEDIA_LOCAL_LIGHTS"}});
-    const gpu::Program& program = localLights ? localLightsProgram_ : sunOnlyProgram_;
+    const gpu::Program& program = programs_.forLights(context.input.lights);
     const auto& data = graph.addPass<Data>(
         "media_particles",
         [&](render::PassBuilder& builder, Data& d) {
