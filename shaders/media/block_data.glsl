@@ -31,29 +31,38 @@ struct ImpostorSample {
     vec4 sums2;  // τ·emission, τ·g
 };
 
-// Bilinear read of up to three impostor layers inside one tile. Depths are averaged over the texels
-// that hold particles only (an empty texel's depths are sentinels); optical depth and the sums are
-// plain bilinear, so they fade to zero at the silhouette.
-ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, bool withSums, BlockTile tile, vec2 texel) {
+// The four texels and weights of a bilinear read at `texel`, kept inside the tile.
+void tileBilinear(BlockTile tile, vec2 texel, out ivec2 q[4], out float w[4]) {
     vec2 p = clamp(texel, tile.atlas.xy + 0.5, tile.atlas.xy + tile.atlas.zw - 0.5) - 0.5;
     ivec2 base = ivec2(floor(p));
     vec2 f = p - vec2(base);
     ivec2 maxTexel = ivec2(tile.atlas.xy + tile.atlas.zw) - 1;
+    for (int j = 0; j < 4; ++j) {
+        q[j] = min(base + ivec2(j & 1, j >> 1), maxTexel);
+        w[j] = ((j & 1) == 1 ? f.x : 1.0 - f.x) * ((j >> 1) == 1 ? f.y : 1.0 - f.y);
+    }
+}
+
+// Bilinear read of up to three impostor layers inside one tile. Depths are averaged over the texels
+// that hold particles only (an empty texel's depths are sentinels); optical depth and the sums are
+// plain bilinear, so they fade to zero at the silhouette.
+ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, bool withSums, BlockTile tile, vec2 texel) {
+    ivec2 q[4];
+    float w[4];
+    tileBilinear(tile, texel, q, w);
     ImpostorSample s = ImpostorSample(0.0, 0.0, 0.0, vec4(0.0), vec4(0.0));
     float depthWeight = 0.0;
     for (int j = 0; j < 4; ++j) {
-        ivec2 q = min(base + ivec2(j & 1, j >> 1), maxTexel);
-        float w = ((j & 1) == 1 ? f.x : 1.0 - f.x) * ((j >> 1) == 1 ? f.y : 1.0 - f.y);
-        vec4 d = texelFetch(depths, q, 0);
-        s.tau += w * d.a;
+        vec4 d = texelFetch(depths, q[j], 0);
+        s.tau += w[j] * d.a;
         if (d.a > 0.0) {
-            s.front += w * d.r;
-            s.back -= w * d.g;
-            depthWeight += w;
+            s.front += w[j] * d.r;
+            s.back -= w[j] * d.g;
+            depthWeight += w[j];
         }
         if (withSums) {
-            s.sums1 += w * texelFetch(sums1, q, 0);
-            s.sums2 += w * texelFetch(sums2, q, 0);
+            s.sums1 += w[j] * texelFetch(sums1, q[j], 0);
+            s.sums2 += w[j] * texelFetch(sums2, q[j], 0);
         }
     }
     if (depthWeight > 0.0) {
@@ -61,4 +70,14 @@ ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, 
         s.back /= depthWeight;
     }
     return s;
+}
+
+// Bilinear read of one more additive impostor layer (the depth moments τ·mean, τ·mean²).
+vec4 readImpostorLayer(sampler2D layer, BlockTile tile, vec2 texel) {
+    ivec2 q[4];
+    float w[4];
+    tileBilinear(tile, texel, q, w);
+    vec4 sum = vec4(0.0);
+    for (int j = 0; j < 4; ++j) sum += w[j] * texelFetch(layer, q[j], 0);
+    return sum;
 }

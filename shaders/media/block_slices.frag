@@ -31,8 +31,9 @@ void main() {
     // How the block's optical depth is spread along the light ray: a Gaussian with the mean and
     // variance of its particles' kernels (moments the impostor accumulates), which follows a dense
     // core far better than uniform density between the outermost spheres.
-    float mean = s.sums1.x / s.tau + tile.instance.x;  // an instanced prototype is shifted along the light
+    float mean = s.sums1.x / s.tau;
     float deviation = sqrt(max(s.sums1.y / s.tau - mean * mean, 0.0));
+    mean += tile.instance.x;  // an instanced prototype is shifted along the light (its spread is not)
     int slices = int(uParams.w);
     float spacing = (uParams.z - uParams.y) / uParams.w;
     vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));

@@ -108,35 +108,3 @@ vec2 localLightSegment(vec3 origin, vec3 dir, Chord c, float radius, float lo, f
     float uCentre = sum > 0.0 ? weightedT / sum - c.tClosest : 0.5 * (lit.x + lit.y);
     return vec2(sigma * sum / alpha, clamp(uCentre, lo, hi));
 }
-
-// The same for a block's visible segment [t0, t1] (ray parameters) of optical depth τ. A block
-// assumes uniform density inside (seed 000 §2.4), but a lamp's peak weighs the density right at the
-// lamp, so the block's own particles listed around the lamp (lamp_neighbourhood.glsl) give their
-// exact extinction and attenuation, over their whole chords (a block's [front, back] covers only
-// ±√3·R/3 of each particle), the rest of its optical depth is spread uniformly over [t0, t1]
-// outside the list's ball, and the other blocks' attenuation is made exact there as in particles
-// mode. T is read at every node: a block spans many particles, so the light's transmittance
-// changes across the segment. Returns J.
-float uniformLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float tau, int i, GpuParticle block, LayerOrder layer) {
-    float alpha = oneMinusExpNeg(tau);
-    if (!(alpha > 0.0) || !(t1 > t0)) return 0.0;
-    vec2 span = lampLayerSpan(i, origin, dir, layer);
-    vec2 lit = spotConeInterval(i, origin, dir, Chord(0.0, 0.0, 0.0), min(t0, span.x), max(t1, span.y));
-    float t[LAMP_NODES], f[LAMP_NODES];
-    if (!lampQuadrature(i, origin, dir, lit, t1 - t0, t, f)) return 0.0;
-    float extinction[LAMP_NODES], inFront[LAMP_NODES], listed[LAMP_NODES], logFactor[LAMP_NODES];
-    float rest = max(tau - lampLayerMass(i, origin, dir, t, layer, extinction, inFront, listed), 0.0) / (t1 - t0);
-    lampOrderCorrection(i, origin, dir, t, layer, logFactor);
-    vec3 lightPos = lights[i].position.xyz;
-    float sum = 0.0;
-    for (int j = 0; j < LAMP_NODES; ++j) {
-        vec3 x = origin + dir * t[j];
-        bool inBlock = t[j] >= t0 && t[j] <= t1;
-        f[j] *= lightShape(i, x) * (extinction[j] + (inBlock ? (1.0 - listed[j]) * rest : 0.0));
-        if (f[j] <= 0.0) continue;
-        float ownInFront = inFront[j] + rest * clamp(t[j] - t0, 0.0, t1 - t0);
-        f[j] *= exp(logFactor[j] - ownInFront - mediumOpticalDepth(i, x)) * lampMeshVisibility(i, x);
-        sum += f[j] * phaseValue(block.extra.x, block.emissionG.w, normalize(lightPos - x), dir);
-    }
-    return sum / alpha;
-}

@@ -139,7 +139,7 @@ TEST_F(StabilityTest, SpotLightInsideCloudParticlesWithinBound) {
     expectWithinBound(kSpotInCloud, runCase(context(), kSpotInCloud), MediaMode::Particles, kDefaultErrorBound);
 }
 // DISABLED (finding for blocks mode): 23% (110% while a block was lit at one point: the peak pixel
-// (46, 21) at 96×54 read 0.016 against 2.04; local_light_segment.glsl uniformLocalLightSegment now
+// (46, 21) at 96×54 read 0.016 against 2.04; block_lighting.glsl blockLocalLightSegment now
 // integrates the lamp over each block's segment with its listed particles, and that pixel reads
 // 2.0). What remains: the medium lit by the spot's beam below the lamp is 25-30% too bright
 // (pixel (47, 25): 0.95 against 0.735); with one particle per block (blocks=100) 14%, so it is

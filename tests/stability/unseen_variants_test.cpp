@@ -44,7 +44,7 @@ const std::map<std::string, std::string> kBeyondBound = {
      "rings (where the lit half of the kernel ends at the ground's shadow), and rel-RMSE, which divides by "
      "the mean, reads 37%"},
     {"variant_04_normal_tau1em05_antiparallel_gp0_99_n1_through/blocks",
-     "as for particles (28%): the phase peak dominates the image and the impostor's optical depth there is "
+     "as for particles (34%): the phase peak dominates the image and the impostor's optical depth there is "
      "a few percent off"},
     {"variant_05_normal_tau30_spot_inside_gp0_50_n1_far_inside_through/blocks",
      "spot light inside the particle: 88% (665% before the lamp's light was integrated over each block's segment "

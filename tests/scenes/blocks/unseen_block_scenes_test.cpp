@@ -43,13 +43,23 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
     EXPECT_LE(error, kMaxRelRmse);
 }
 
-// DISABLED: the seam criterion of cloud_blocks_test.cpp (which passes on cloud.gltf) fails on most
-// of these scenes. Seam band rel_rmse, blocks (2√N blocks) vs particles with soft_particles=off:
-// 00 1.15% vs 1.26% (passes), 02 5.20% vs 4.92%, 03 1.14% vs 0.93%, 05 4.55% vs 3.98%,
-// 06 1.55% vs 1.13%, 08 9.49% vs 7.27%, 09 4.71% vs 4.19%. Their particles are smaller than
-// cloud.gltf's, so a billboard's plane cuts less of the wing, while a block still assumes uniform
-// density over its whole [front, back].
-TEST_P(UnseenBlockScenesTest, DISABLED_SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
+// The seam criterion of cloud_blocks_test.cpp: in the band of pixels where the wing lies inside
+// the cloud, blocks err less than billboards without soft particles. Seam band rel_rmse, blocks
+// (2√N blocks) vs particles with soft_particles=off:
+//   passing: 00 0.73% vs 1.26%, 03 0.82% vs 0.93%, 04 11.1% vs 38.9%, 09 2.37% vs 4.19%
+//   failing: 01 5.12% vs 4.19%, 02 5.09% vs 4.92%, 05 4.18% vs 3.98%, 06 1.28% vs 1.13%,
+//            07 8.71% vs 8.67%, 08 8.82% vs 7.27%
+// (before a block's mass was cut at the surface by its depth profile instead of uniformly over
+// [front, back], only 00 passed). Blocks of 6-12 particles (these clouds have 150-600) err in
+// how overlapping blocks composite, wherever the wing is; with one particle per block all ten
+// pass, and 3√N or 4√N blocks move single scenes either way (07: 6.65% / 9.11%) without a trend.
+const char* const kSeamPassing[] = {"block_scene_00", "block_scene_03", "block_scene_04", "block_scene_09"};
+const char* const kSeamFailing[] = {"block_scene_01", "block_scene_02", "block_scene_05",
+                                    "block_scene_06", "block_scene_07", "block_scene_08"};
+
+class UnseenSeamBandTest : public GlSceneTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(UnseenSeamBandTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
     const std::filesystem::path scene = kSceneDir / (std::string(GetParam()) + ".gltf");
     const assets::RgbImage reference = renderReference(scene, kWidth, kHeight);
     std::size_t seamPixels = 0;
@@ -64,6 +74,9 @@ TEST_P(UnseenBlockScenesTest, DISABLED_SeamBandErrorIsBelowParticlesWithoutSoftP
 std::string sceneName(const ::testing::TestParamInfo<const char*>& scene) { return scene.param; }
 
 INSTANTIATE_TEST_SUITE_P(Generated, UnseenBlockScenesTest, ::testing::ValuesIn(kScenes), sceneName);
+INSTANTIATE_TEST_SUITE_P(Generated, UnseenSeamBandTest, ::testing::ValuesIn(kSeamPassing), sceneName);
+// DISABLED until blocks beat billboards in the band on these too (see the numbers above).
+INSTANTIATE_TEST_SUITE_P(DISABLED_KnownFailing, UnseenSeamBandTest, ::testing::ValuesIn(kSeamFailing), sceneName);
 
 TEST(UnseenBlockScenes, EveryGeneratedSceneIsJudged) {
     // A scene added by the generator must be listed above, never skipped silently.
@@ -72,6 +85,10 @@ TEST(UnseenBlockScenes, EveryGeneratedSceneIsJudged) {
         if (entry.path().extension() == ".gltf") files.insert(entry.path().stem().string());
     for (const char* name : kScenes) listed.insert(name);
     EXPECT_EQ(files, listed);
+    std::set<std::string> seamListed;
+    for (const char* name : kSeamPassing) seamListed.insert(name);
+    for (const char* name : kSeamFailing) seamListed.insert(name);
+    EXPECT_EQ(files, seamListed);
     EXPECT_GE(files.size(), 8u);
 }
 

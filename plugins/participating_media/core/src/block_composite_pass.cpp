@@ -18,7 +18,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
                                                const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors,
                                                const MediaTarget& target) {
     struct Impostors {
-        render::ResourceHandle depths, sums1, sums2;
+        render::ResourceHandle depths, sums1, sums2, moments;
     };
     const glm::ivec2 atlas = plan.atlasSize;
     const auto& made = graph.addPass<Impostors>(
@@ -27,13 +27,16 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.depths = builder.create("block_impostor_depths", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
             d.sums1 = builder.create("block_impostor_sums1", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
             d.sums2 = builder.create("block_impostor_sums2", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
+            d.moments = builder.create("block_impostor_moments", {GL_TEXTURE_2D, GL_RG32F, atlas.x, atlas.y, 1, 1});
         },
         [&plan, &blocks, &particles, &impostors](const render::PassResources& r, const Impostors& d) {
-            impostors.render(plan, 0, {.depths = r.id(d.depths), .sums1 = r.id(d.sums1), .sums2 = r.id(d.sums2)}, blocks, particles);
+            impostors.render(plan, 0,
+                             {.depths = r.id(d.depths), .sums1 = r.id(d.sums1), .sums2 = r.id(d.sums2), .moments = r.id(d.moments)},
+                             blocks, particles);
         });
 
     struct Composite {
-        render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2;
+        render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments;
     };
     const int w = target.size.x, h = target.size.y;
     const gpu::Program& program = programs_.forLights(context.input.lights);
@@ -47,6 +50,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.depths = builder.read(made.depths);
             d.sums1 = builder.read(made.sums1);
             d.sums2 = builder.read(made.sums2);
+            d.moments = builder.read(made.moments);
         },
         [this, &program, &context, &backToFront, &blocks, &particles, w, h, scale = target.fullResScale](const render::PassResources& r,
                                                                                             const Composite& d) {
@@ -69,6 +73,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glBindTextureUnit(kImpostorDepthsUnit, r.id(d.depths));
             glBindTextureUnit(kImpostorDepthsUnit + 1, r.id(d.sums1));
             glBindTextureUnit(kImpostorDepthsUnit + 2, r.id(d.sums2));
+            glBindTextureUnit(kImpostorDepthsUnit + 3, r.id(d.moments));
             glDisable(GL_DEPTH_TEST);
             glDisable(GL_CULL_FACE);
             glEnable(GL_BLEND);

@@ -1,0 +1,113 @@
+// Light scattered by a block's visible segment of a view ray (blocks mode's counterpart of
+// lighting.glsl segmentSource): the same lights, with a block's depth profile (BlockProfile) in
+// place of a particle's kernel. Needs media/lighting.
+
+// How a block's optical depth lies along one ray: a Gaussian with the impostor's mean and deviation
+// of depth, cut to the block's [front, back] (seed 000 §2.4 assumes uniform density over that
+// interval; the moments follow where the mass actually lies, as the light slices spread a block in
+// block_slices.frag). A profile without spread (one particle's centre on the ray's plane) is
+// uniform over [front, back].
+struct BlockProfile {
+    float front;
+    float back;
+    float mean;
+    float deviation;  // 0: uniform
+};
+
+BlockProfile blockProfile(float front, float back, vec2 moments) {
+    float deviation = sqrt(max(moments.y - moments.x * moments.x, 0.0));
+    return BlockProfile(front, back, moments.x, deviation > 1e-6 * max(abs(back), 1.0) ? deviation : 0.0);
+}
+
+// Share of the profile's mass in front of ray distance t.
+float profileMassBefore(BlockProfile p, float t) {
+    if (t <= p.front) return 0.0;
+    if (t >= p.back) return 1.0;
+    if (p.deviation > 0.0) {
+        float scale = 1.0 / (p.deviation * 1.41421356);
+        float lo = erfApprox((p.front - p.mean) * scale), hi = erfApprox((p.back - p.mean) * scale);
+        // Far in one tail the erf difference vanishes in float; uniform is then the better guess.
+        if (hi - lo > 1e-4) return clamp((erfApprox((t - p.mean) * scale) - lo) / (hi - lo), 0.0, 1.0);
+    }
+    return (t - p.front) / (p.back - p.front);
+}
+
+// localLightSegment (local_light_segment.glsl) for a block's visible segment [t0, t1] (ray
+// parameters) of optical depth τ. A lamp's peak weighs the density right at the lamp, which no
+// profile along the whole ray knows, so the block's own particles listed around the lamp
+// (lamp_neighbourhood.glsl) give their exact extinction and attenuation, over their whole chords
+// (a block's [front, back] covers only ±√3·R/3 of each particle); the rest of its optical depth is
+// spread uniformly over [t0, t1] outside the list's ball, and the other blocks' attenuation is
+// made exact there as in particles mode. T is read at every node: a block spans many particles,
+// so the light's transmittance changes across the segment. Returns J.
+float blockLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float tau, int i, GpuParticle block, LayerOrder layer) {
+    float alpha = oneMinusExpNeg(tau);
+    if (!(alpha > 0.0) || !(t1 > t0)) return 0.0;
+    vec2 span = lampLayerSpan(i, origin, dir, layer);
+    vec2 lit = spotConeInterval(i, origin, dir, Chord(0.0, 0.0, 0.0), min(t0, span.x), max(t1, span.y));
+    float t[LAMP_NODES], f[LAMP_NODES];
+    if (!lampQuadrature(i, origin, dir, lit, t1 - t0, t, f)) return 0.0;
+    float extinction[LAMP_NODES], inFront[LAMP_NODES], listed[LAMP_NODES], logFactor[LAMP_NODES];
+    float rest = max(tau - lampLayerMass(i, origin, dir, t, layer, extinction, inFront, listed), 0.0) / (t1 - t0);
+    lampOrderCorrection(i, origin, dir, t, layer, logFactor);
+    vec3 lightPos = lights[i].position.xyz;
+    float sum = 0.0;
+    for (int j = 0; j < LAMP_NODES; ++j) {
+        vec3 x = origin + dir * t[j];
+        bool inBlock = t[j] >= t0 && t[j] <= t1;
+        f[j] *= lightShape(i, x) * (extinction[j] + (inBlock ? (1.0 - listed[j]) * rest : 0.0));
+        if (f[j] <= 0.0) continue;
+        float ownInFront = inFront[j] + rest * clamp(t[j] - t0, 0.0, t1 - t0);
+        f[j] *= exp(logFactor[j] - ownInFront - mediumOpticalDepth(i, x)) * lampMeshVisibility(i, x);
+        sum += f[j] * phaseValue(block.extra.x, block.emissionG.w, normalize(lightPos - x), dir);
+    }
+    return sum / alpha;
+}
+
+// segmentVisibility for a block's segment [front, back] of the ray: the lit fraction is the lit
+// share of the block's mass along the ray (block_data.glsl BlockProfile).
+float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile, float t, float softness) {
+    float t0 = profile.front, t1 = profile.back;
+    float vLo = meshVisibilityTap(i, origin + dir * t0, softness);
+    float vMid = meshVisibilityTap(i, origin + dir * t, softness);
+    float vHi = meshVisibilityTap(i, origin + dir * t1, softness);
+    bool firstHalf = (vLo > 0.5) != (vMid > 0.5), secondHalf = (vMid > 0.5) != (vHi > 0.5);
+    if ((!firstHalf && !secondHalf) || !(t1 > t0)) return (vLo + 4.0 * vMid + vHi) / 6.0;
+    float a = firstHalf ? t0 : t, b = firstHalf ? t : t1;
+    bool litAtA = (firstHalf ? vLo : vMid) > 0.5;
+    for (int step = 0; step < 6; ++step) {
+        float m = 0.5 * (a + b);
+        if ((meshVisibilityTap(i, origin + dir * m, softness) > 0.5) == litAtA) a = m;
+        else b = m;
+    }
+    float before = profileMassBefore(profile, 0.5 * (a + b));  // share of the mass in front of the crossing
+    return clamp(firstHalf ? (vLo > 0.5 ? before : 1.0 - before) : (vHi > 0.5 ? 1.0 - before : before), 0.0, 1.0);
+}
+
+// The source of a block's visible segment [t0, t1] of optical depth τ (uniform density inside a
+// block): every light at the shading point t, with the mesh visibility taken over the segment,
+// except point and spot lights near the segment or whose cone's edge crosses it: those are
+// integrated over it as in segmentSource (1/d² across a block spans far more than across one
+// particle: one shading point missed a lamp's glow by up to 95 %).
+vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float t, float tau, GpuParticle block, LayerOrder layer) {
+    float t0 = profile.front, t1 = profile.back;
+    vec3 p = origin + dir * t;
+    vec3 scattered = frame.ambient.rgb;
+    float radius = block.positionRadius.w;
+    for (int i = 0; i < frame.counts.x; ++i) {
+#ifdef MEDIA_LOCAL_LIGHTS  // block_composite_pass.cpp builds this only for frames with point or spot lights
+        if (lights[i].direction.w > 0.5) {
+            float tNearest = clamp(dot(lights[i].position.xyz - origin, dir), t0, t1);
+            bool nearLamp = distance(origin + dir * tNearest, lights[i].position.xyz) < (t1 - t0) + 2.0 * radius;
+            vec2 lit = spotConeInterval(i, origin, dir, Chord(0.0, 0.0, 0.0), t0, t1);
+            if (nearLamp || lit.x > t0 || lit.y < t1) {
+                scattered += lights[i].radiance.rgb * blockLocalLightSegment(origin, dir, t0, t1, tau, i, block, layer);
+                continue;
+            }
+        }
+#endif
+        float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, profile, t, radius / 3.0) : 1.0;
+        scattered += scatteredLight(i, p, dir, block, visibility);
+    }
+    return block.albedoSigma.rgb * scattered + block.emissionG.rgb;
+}
