@@ -34,12 +34,18 @@ void main() {
     float mean = s.sums1.x / s.tau;
     float deviation = sqrt(max(s.sums1.y / s.tau - mean * mean, 0.0));
     mean += tile.instance.x;  // an instanced prototype is shifted along the light (its spread is not)
+    // No mass lies behind the ray's start (a lamp inside the medium): the Gaussian is cut there, or
+    // a single particle around a spot light put a sixth of its τ 50 behind the lamp and darkened
+    // everything it lit by 10-25%.
+    float scale = deviation > 1e-6 ? 1.0 / (deviation * 1.41421356) : 0.0;
+    float behind = deviation > 1e-6 ? erfApprox(-mean * scale) : -1.0;
     int slices = int(uParams.w);
     float spacing = (uParams.z - uParams.y) / uParams.w;
     vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     for (int k = 0; k < slices; ++k) {
         float t = (uParams.y + float(k + 1) * spacing) / cosAxis;
-        float fraction = deviation > 1e-6 ? 0.5 * (1.0 + erfApprox((t - mean) / (deviation * 1.41421356))) : (t >= mean ? 1.0 : 0.0);
+        float fraction = deviation > 1e-6 ? max(erfApprox((t - mean) * scale) - behind, 0.0) / max(1.0 - behind, 1e-6)
+                                          : (t >= mean ? 1.0 : 0.0);
         values[k / 4][k - 4 * (k / 4)] = s.tau * fraction;
     }
     for (int a = 0; a < 8; ++a) outSlices[a] = values[a];
