@@ -130,21 +130,17 @@ TEST_F(StabilityTest, LightPerpendicularToViewWithinBound) {
 // tan-substitution of one pixel's ray: 2.021 + 0.016 ambient against the reference's 2.037); where
 // rays pass within millimetres of the light the reference itself fails (reference_near_light_test).
 // Bound: 15%. Measured: particles 3.6% (9.0% with the light averaged over the kernel and applied
-// at one point per particle; 178% before 213e2c7 put the cone inside that average), blocks 23% —
-// beyond the bound, see the DISABLED_ test.
+// at one point per particle; 178% before 213e2c7 put the cone inside that average), blocks 3.2%
+// (110% while a block was lit at one point: the peak pixel (46, 21) at 96×54 read 0.016 against
+// 2.04; block_lighting.glsl blockLocalLightSegment integrates the lamp over each block's segment
+// with the block's own particles listed around the lamp, within the largest block's radius).
 const HardCase kSpotInCloud{.name = "spot_in_cloud", .scene = "spot_in_cloud.gltf"};
 
 TEST_F(StabilityTest, SpotLightInsideCloudStaysFinite) { expectFiniteAndClean(kSpotInCloud, runCase(context(), kSpotInCloud)); }
 TEST_F(StabilityTest, SpotLightInsideCloudParticlesWithinBound) {
     expectWithinBound(kSpotInCloud, runCase(context(), kSpotInCloud), MediaMode::Particles, kDefaultErrorBound);
 }
-// DISABLED (finding for blocks mode): 23% (110% while a block was lit at one point: the peak pixel
-// (46, 21) at 96×54 read 0.016 against 2.04; block_lighting.glsl blockLocalLightSegment now
-// integrates the lamp over each block's segment with its listed particles, and that pixel reads
-// 2.0). What remains: the medium lit by the spot's beam below the lamp is 25-30% too bright
-// (pixel (47, 25): 0.95 against 0.735); with one particle per block (blocks=100) 14%, so it is
-// the block's uniform density and the light slices built from blocks, not the lamp's peak.
-TEST_F(StabilityTest, DISABLED_SpotLightInsideCloudBlocksWithinBound) {
+TEST_F(StabilityTest, SpotLightInsideCloudBlocksWithinBound) {
     expectWithinBound(kSpotInCloud, runCase(context(), kSpotInCloud), MediaMode::Blocks, kDefaultErrorBound);
 }
 

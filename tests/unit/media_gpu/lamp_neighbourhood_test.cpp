@@ -80,6 +80,21 @@ TEST(LampNeighbourhoods, GivesALampOutsideTheMediumTheNearestParticlesRadiusWhen
     EXPECT_EQ(n.neighbours[n.lamps[0].first], glm::uvec2(0u, 7u));
 }
 
+TEST(LampNeighbourhoods, ShrinksReachToWhereTheCappedListIsCompleteWhenAllAreListed) {
+    // Particles at growing distances; the caller asks for a reach that would take them all. The
+    // list keeps the kMaxLampNeighbours nearest by gap, and reach becomes the first gap left out,
+    // so every particle reaching into the ball is listed.
+    std::vector<glm::dvec3> centres;
+    for (std::size_t i = 0; i < kMaxLampNeighbours + 40; ++i) centres.push_back({2.0 + 0.01 * static_cast<double>(i), 0.0, 0.0});
+    const ParticleSet set = particlesAt(centres, 1.0f);
+    LampNeighbourhoods n;
+    n.find(set, {lamp(assets::LightType::Point, {0.0, 0.0, 0.0})}, identityRanks(set.size()), LampsListed::All, 10.0);
+    ASSERT_EQ(n.lamps[0].count, kMaxLampNeighbours);
+    const double firstLeftOut = 2.0 + 0.01 * static_cast<double>(kMaxLampNeighbours) - 1.0;
+    EXPECT_NEAR(n.lamps[0].reach, firstLeftOut, 1e-6);
+    for (std::uint32_t k = 0; k < n.lamps[0].count; ++k) EXPECT_LT(n.neighbours[n.lamps[0].first + k].x, kMaxLampNeighbours);
+}
+
 TEST(LampNeighbourhoods, KeepsTheClosestWhenMoreThanTheCapOverlap) {
     // Many particles all containing the lamp, at growing distances: only the closest are kept.
     std::vector<glm::dvec3> centres;

@@ -13,7 +13,7 @@ bool anyLamp(const std::vector<assets::ResolvedLight>& lights) {
 }
 
 void LampNeighbourhoods::find(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
-                              const std::vector<std::uint32_t>& rankOf, LampsListed which) {
+                              const std::vector<std::uint32_t>& rankOf, LampsListed which, double minimumReach) {
     lamps.assign(lights.size(), LampNeighbourhood{});
     neighbours.clear();
     if (!anyLamp(lights)) return;
@@ -29,21 +29,27 @@ void LampNeighbourhoods::find(const ParticleSet& particles, const std::vector<as
                 nearestRadius = particles.radius[i];
             }
         }
-        const double reach = largestContaining > 0.0 || which == LampsListed::InsideMedium ? largestContaining : nearestRadius;
+        double reach = largestContaining > 0.0 || which == LampsListed::InsideMedium ? largestContaining : nearestRadius;
+        if (which == LampsListed::All) reach = std::max(reach, minimumReach);
         if (reach <= 0.0) continue;
         candidates_.clear();
         for (std::size_t i = 0; i < particles.size(); ++i) {
             const double distance = glm::length(particles.position[i] - lamp);
-            if (distance < particles.radius[i] + reach)
-                candidates_.emplace_back(distance / particles.radius[i], static_cast<std::uint32_t>(i));
+            if (distance >= particles.radius[i] + reach) continue;
+            // InsideMedium: closest relative to their radius first (the most mass at the lamp). All:
+            // by the gap between sphere and lamp, so that the list is complete up to the first left out.
+            const double key = which == LampsListed::InsideMedium ? distance / particles.radius[i] : distance - particles.radius[i];
+            candidates_.emplace_back(key, static_cast<std::uint32_t>(i));
         }
-        // Closest relative to their radius first (the most mass at the lamp); ties by index, so deterministic.
-        std::sort(candidates_.begin(), candidates_.end());
-        if (candidates_.size() > kMaxLampNeighbours) candidates_.resize(kMaxLampNeighbours);
+        std::sort(candidates_.begin(), candidates_.end());  // ties by index, so deterministic
+        if (candidates_.size() > kMaxLampNeighbours) {
+            if (which == LampsListed::All) reach = candidates_[kMaxLampNeighbours].first;  // may be ≤ 0: then nothing is trusted
+            candidates_.resize(kMaxLampNeighbours);
+        }
         LampNeighbourhood& entry = lamps[l];
         entry.first = static_cast<std::uint32_t>(neighbours.size());
         entry.count = static_cast<std::uint32_t>(candidates_.size());
-        entry.reach = static_cast<float>(reach);
+        entry.reach = static_cast<float>(std::max(reach, 0.0));
         for (const auto& [key, index] : candidates_) neighbours.emplace_back(index, index < rankOf.size() ? rankOf[index] : 0u);
     }
 }

@@ -35,7 +35,10 @@ enum class LampsListed {
     // Lamps inside the medium (particles mode: outside it, compositing order gets the peak right).
     InsideMedium,
     // Every lamp near the medium (blocks mode: a block's uniform density is wrong near any lamp).
-    // A lamp outside every particle gets the radius of the particle nearest it as reach.
+    // Reach is at least the caller's minimum (a lamp outside every particle: at least the radius
+    // of the particle nearest it); where more than kMaxLampNeighbours particles come within it,
+    // the closest by the gap between sphere and lamp are kept and reach shrinks to the first gap
+    // left out, so the list stays complete within reach.
     All,
 };
 
@@ -48,7 +51,7 @@ class LampNeighbourhoods {
 public:
     // Recomputes everything; storage is reused, so steady frames allocate nothing.
     void find(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
-              const std::vector<std::uint32_t>& rankOf, LampsListed which);
+              const std::vector<std::uint32_t>& rankOf, LampsListed which, double minimumReach = 0.0);
 
     std::vector<LampNeighbourhood> lamps;
     std::vector<glm::uvec2> neighbours;  // x: particle index, y: its layer's rank

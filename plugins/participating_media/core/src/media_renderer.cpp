@@ -96,12 +96,14 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
             blockBuffers_->uploadDrawOrder(frame.backToFront);
             if (!anyLamp(context.input.lights)) return;
             frame.blockRankOf.assign(particles_->size(), 0u);
+            double largestBlock = 0.0;  // a lamp's 1/d² varies across a block within about its size of the lamp
             for (std::size_t r = 0; r < frame.backToFront.size(); ++r) {
                 const Block& block = frame.partition.blocks[frame.backToFront[r]];
+                largestBlock = std::max(largestBlock, block.radius);
                 for (std::uint32_t k = block.first; k < block.first + block.count; ++k)
                     frame.blockRankOf[frame.partition.order[k]] = static_cast<std::uint32_t>(r);
             }
-            buffer_->uploadLampNeighbourhoods(*particles_, context.input.lights, frame.blockRankOf, LampsListed::All);
+            buffer_->uploadLampNeighbourhoods(*particles_, context.input.lights, frame.blockRankOf, LampsListed::All, largestBlock);
         });
 
     const int resolution = settings_.sliceResolution > 0 ? settings_.sliceResolution : 256;

@@ -50,8 +50,8 @@ void ParticleGpuBuffer::uploadLampNeighbourhoods(const ParticleSet& particles, c
 }
 
 void ParticleGpuBuffer::uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
-                                                 const std::vector<std::uint32_t>& rankOf, LampsListed which) {
-    lamps_.find(particles, lights, rankOf, which);
+                                                 const std::vector<std::uint32_t>& rankOf, LampsListed which, double minimumReach) {
+    lamps_.find(particles, lights, rankOf, which, minimumReach);
     lampBuffer_.upload(lamps_);
 }
 

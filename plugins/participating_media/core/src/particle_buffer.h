@@ -31,7 +31,7 @@ public:
     void uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights);
     // The same with each particle's layer rank given (blocks mode: its block's place in the draw order).
     void uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights,
-                                  const std::vector<std::uint32_t>& rankOf, LampsListed which);
+                                  const std::vector<std::uint32_t>& rankOf, LampsListed which, double minimumReach = 0.0);
 
     void bindParticles() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticlesBinding, particles_.id()); }
     void bindOrder() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDrawOrderBinding, order_.id()); }
