@@ -84,14 +84,30 @@ float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile,
     return clamp(firstHalf ? (vLo > 0.5 ? before : 1.0 - before) : (vHi > 0.5 ? 1.0 - before : before), 0.0, 1.0);
 }
 
-// The source of a block's visible segment [t0, t1] of optical depth τ (uniform density inside a
-// block): every light at the shading point t, with the mesh visibility taken over the segment,
-// except point and spot lights near the segment or whose cone's edge crosses it: those are
-// integrated over it as in segmentSource (1/d² across a block spans far more than across one
-// particle: one shading point missed a lamp's glow by up to 95 %).
-vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float t, float tau, GpuParticle block, LayerOrder layer) {
+// Where the in-scattering of a segment of uniform density and optical depth τ, seen from its front,
+// is centred: at the e^−v-weighted mean optical depth v̄ (chordShadingPoint's rule for a uniform
+// profile), as a share of the segment's length.
+float uniformShadingFraction(float tau) {
+    return tau < 1e-3 ? 0.5 - tau / 12.0 : (1.0 - (1.0 + tau) * exp(-tau)) / (tau * oneMinusExpNeg(tau));
+}
+
+// A block is shaded at this many points along its visible segment: one point missed how the light
+// changes across a block of several particles (its own shadow, the mesh's): on cloud.gltf the seam
+// band erred 1.7% with one, 1.2% with two.
+const int BLOCK_SHADING_PIECES = 2;
+
+// The source of a block's visible segment [front, back] of optical depth τ: directional lights and
+// distant lamps at BLOCK_SHADING_PIECES points, one per piece of equal length and optical depth
+// (uniform density), weighted by the share of the block's light each piece sends to the front,
+// with the mesh visibility taken over the piece; point and spot lights near the segment or whose
+// cone's edge crosses it are integrated over the whole of it (blockLocalLightSegment: 1/d² across
+// a block spans far more than across one particle, and one shading point missed a lamp's glow by
+// up to 95%).
+vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float tau, GpuParticle block, LayerOrder layer) {
     float t0 = profile.front, t1 = profile.back;
-    vec3 p = origin + dir * t;
+    float pieceTau = tau / float(BLOCK_SHADING_PIECES), pieceLength = (t1 - t0) / float(BLOCK_SHADING_PIECES);
+    float pieceAlpha = oneMinusExpNeg(pieceTau), alpha = oneMinusExpNeg(tau);
+    float shadeAt = uniformShadingFraction(pieceTau) * pieceLength;
     vec3 scattered = frame.ambient.rgb;
     float radius = block.positionRadius.w;
     for (int i = 0; i < frame.counts.x; ++i) {
@@ -106,8 +122,16 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float t, fl
             }
         }
 #endif
-        float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, profile, t, radius / 3.0) : 1.0;
-        scattered += scatteredLight(i, p, dir, block, visibility);
+        BlockProfile piece = profile;
+        for (int k = 0; k < BLOCK_SHADING_PIECES; ++k) {
+            piece.front = t0 + float(k) * pieceLength;
+            piece.back = piece.front + pieceLength;
+            float t = piece.front + shadeAt;
+            // Piece k's share: its own opacity, behind the k pieces in front of it.
+            float weight = alpha > 0.0 ? pieceAlpha * exp(-float(k) * pieceTau) / alpha : 1.0 / float(BLOCK_SHADING_PIECES);
+            float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, piece, t, radius / 3.0) : 1.0;
+            scattered += weight * scatteredLight(i, origin + dir * t, dir, block, visibility);
+        }
     }
     return block.albedoSigma.rgb * scattered + block.emissionG.rgb;
 }
