@@ -67,21 +67,11 @@ float blockLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float ta
 // segmentVisibility for a block's segment [front, back] of the ray: the lit fraction is the lit
 // share of the block's mass along the ray (block_data.glsl BlockProfile).
 float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile, float t, float softness) {
-    float t0 = profile.front, t1 = profile.back;
-    float vLo = meshVisibilityTap(i, origin + dir * t0, softness);
-    float vMid = meshVisibilityTap(i, origin + dir * t, softness);
-    float vHi = meshVisibilityTap(i, origin + dir * t1, softness);
-    bool firstHalf = (vLo > 0.5) != (vMid > 0.5), secondHalf = (vMid > 0.5) != (vHi > 0.5);
-    if ((!firstHalf && !secondHalf) || !(t1 > t0)) return (vLo + 4.0 * vMid + vHi) / 6.0;
-    float a = firstHalf ? t0 : t, b = firstHalf ? t : t1;
-    bool litAtA = (firstHalf ? vLo : vMid) > 0.5;
-    for (int step = 0; step < 6; ++step) {
-        float m = 0.5 * (a + b);
-        if ((meshVisibilityTap(i, origin + dir * m, softness) > 0.5) == litAtA) a = m;
-        else b = m;
-    }
-    float before = profileMassBefore(profile, 0.5 * (a + b));  // share of the mass in front of the crossing
-    return clamp(firstHalf ? (vLo > 0.5 ? before : 1.0 - before) : (vHi > 0.5 ? 1.0 - before : before), 0.0, 1.0);
+    float soft, crossing;
+    bool litInFront;
+    if (!meshShadowCrossing(i, origin, dir, profile.front, t, profile.back, softness, soft, crossing, litInFront)) return soft;
+    float before = profileMassBefore(profile, crossing);  // share of the mass in front of the crossing
+    return clamp(litInFront ? before : 1.0 - before, 0.0, 1.0);
 }
 
 // Where the in-scattering of a segment of uniform density and optical depth τ, seen from its front,

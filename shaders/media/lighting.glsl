@@ -78,6 +78,30 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
     return phase * s.irradiance * (visibility * exp(-mediumOpticalDepth(i, p)));
 }
 
+// Where a mesh shadow boundary crosses the ray between t0 and t1: taps at both ends and at t; where
+// two disagree, bisection between them, the boundary treated as locally flat. False, with the taps'
+// depth-soft average in `soft`, when none disagree; else the crossing and whether the ray is lit in
+// front of it.
+bool meshShadowCrossing(int i, vec3 origin, vec3 dir, float t0, float t, float t1, float softness, out float soft,
+                        out float crossing, out bool litInFront) {
+    float vLo = meshVisibilityTap(i, origin + dir * t0, softness);
+    float vMid = meshVisibilityTap(i, origin + dir * t, softness);
+    float vHi = meshVisibilityTap(i, origin + dir * t1, softness);
+    soft = (vLo + 4.0 * vMid + vHi) / 6.0;
+    crossing = t;
+    bool firstHalf = (vLo > 0.5) != (vMid > 0.5), secondHalf = (vMid > 0.5) != (vHi > 0.5);
+    litInFront = (firstHalf ? vLo : vMid) > 0.5;
+    if ((!firstHalf && !secondHalf) || !(t1 > t0)) return false;  // no boundary crossed: depth-soft only
+    float a = firstHalf ? t0 : t, b = firstHalf ? t : t1;
+    for (int step = 0; step < 6; ++step) {
+        float m = 0.5 * (a + b);
+        if ((meshVisibilityTap(i, origin + dir * m, softness) > 0.5) == litInFront) a = m;
+        else b = m;
+    }
+    crossing = 0.5 * (a + b);
+    return true;
+}
+
 // Mesh visibility of light i over a particle's visible segment [lo, hi], as the fraction of the
 // kernel's mass on the lit side. The reference integrates visibility along each ray, so a shadow
 // boundary crossing a particle shades it by how much of its mass lies past the boundary: smooth
@@ -86,28 +110,15 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
 // boundary treated as locally flat, so the lit fraction is an erf ratio. `softness`: the depth
 // spread of each tap (meshVisibilityTap), R/3 for light gathered over the whole kernel.
 float segmentVisibility(int i, vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u, float softness) {
+    float soft, crossing;
+    bool litInFront;
     vec3 base = origin + dir * c.tClosest;
-    float vLo = meshVisibilityTap(i, base + dir * lo, softness);
-    float vMid = meshVisibilityTap(i, base + dir * u, softness);
-    float vHi = meshVisibilityTap(i, base + dir * hi, softness);
-    bool firstHalf = (vLo > 0.5) != (vMid > 0.5), secondHalf = (vMid > 0.5) != (vHi > 0.5);
-    if (!firstHalf && !secondHalf) return (vLo + 4.0 * vMid + vHi) / 6.0;  // no boundary crossed: depth-soft only
-    float a = firstHalf ? lo : u, b = firstHalf ? u : hi;
-    bool litAtA = (firstHalf ? vLo : vMid) > 0.5;
-    for (int step = 0; step < 6; ++step) {
-        float m = 0.5 * (a + b);
-        if ((meshVisibilityTap(i, base + dir * m, softness) > 0.5) == litAtA) a = m;
-        else b = m;
-    }
-    float crossing = 0.5 * (a + b);
+    if (!meshShadowCrossing(i, base, dir, lo, u, hi, softness, soft, crossing, litInFront)) return soft;
     float sk = sqrt(KERNEL_FALLOFF) / radius;
     float total = gaussianSegment(sk, lo, hi);
-    if (!(total > 0.0)) return vMid;
+    if (!(total > 0.0)) return soft;
     float before = gaussianSegment(sk, lo, crossing) / total;  // mass fraction in front of the crossing
-    // Lit before the crossing when the segment starts lit; the far part may cross back (both halves).
-    float lit = litAtA == (firstHalf ? vLo > 0.5 : vMid > 0.5) && firstHalf ? (vLo > 0.5 ? before : 1.0 - before)
-                                                                            : (vHi > 0.5 ? 1.0 - before : before);
-    return clamp(lit, 0.0, 1.0);
+    return clamp(litInFront ? before : 1.0 - before, 0.0, 1.0);
 }
 
 // The source of one particle's visible segment [lo, hi] of the ray, for compositing it as one layer:
