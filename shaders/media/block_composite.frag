@@ -31,7 +31,7 @@ void main() {
     BlockTile tile = blockTiles[vBlock.x];
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
     vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
-    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, true, tile, tileTexel(tile, ndc));
+    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, uImpostorMoments, 3, tile, tileTexel(tile, ndc));
     if (!(s.tau > 0.0)) discard;
     // An instance of the prototype sits farther or nearer than the prototype the tile was made for.
     s.front += tile.instance.x;
@@ -44,7 +44,7 @@ void main() {
     if (tSurface <= s.front) discard;  // the block lies wholly behind the surface
     // The share of the block's optical depth in front of the surface, with the depth profile the
     // impostor's moments give (block_data.glsl blockProfile).
-    vec2 moments = readImpostorLayer(uImpostorMoments, tile, tileTexel(tile, ndc)).xy / s.tau;
+    vec2 moments = s.sums3.xy / s.tau;
     BlockProfile profile = blockProfile(s.front, s.back, vec2(moments.x + tile.instance.x, moments.y + tile.instance.x * (2.0 * moments.x + tile.instance.x)));
     float tau = s.tau * profileMassBefore(profile, tSurface);
     float alpha = oneMinusExpNeg(tau);

@@ -27,8 +27,9 @@ struct ImpostorSample {
     float tau;
     float front;
     float back;
-    vec4 sums1;  // τ·t_shade, τ·albedo
+    vec4 sums1;  // τ·t_shade, τ·albedo (light impostors: the depth moments)
     vec4 sums2;  // τ·emission, τ·g
+    vec4 sums3;  // camera impostors: τ·mean, τ·(variance + mean²) of the depth along the ray
 };
 
 // The four texels and weights of a bilinear read at `texel`, kept inside the tile.
@@ -43,14 +44,15 @@ void tileBilinear(BlockTile tile, vec2 texel, out ivec2 q[4], out float w[4]) {
     }
 }
 
-// Bilinear read of up to three impostor layers inside one tile. Depths are averaged over the texels
-// that hold particles only (an empty texel's depths are sentinels); optical depth and the sums are
-// plain bilinear, so they fade to zero at the silhouette.
-ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, bool withSums, BlockTile tile, vec2 texel) {
+// Bilinear read of the depths and the first `layers` (0..3) additive layers inside one tile.
+// Depths are averaged over the texels that hold particles only (an empty texel's depths are
+// sentinels); optical depth and the sums are plain bilinear, so they fade to zero at the silhouette.
+ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, sampler2D sums3, int layers, BlockTile tile,
+                            vec2 texel) {
     ivec2 q[4];
     float w[4];
     tileBilinear(tile, texel, q, w);
-    ImpostorSample s = ImpostorSample(0.0, 0.0, 0.0, vec4(0.0), vec4(0.0));
+    ImpostorSample s = ImpostorSample(0.0, 0.0, 0.0, vec4(0.0), vec4(0.0), vec4(0.0));
     float depthWeight = 0.0;
     for (int j = 0; j < 4; ++j) {
         vec4 d = texelFetch(depths, q[j], 0);
@@ -60,24 +62,13 @@ ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, 
             s.back -= w[j] * d.g;
             depthWeight += w[j];
         }
-        if (withSums) {
-            s.sums1 += w[j] * texelFetch(sums1, q[j], 0);
-            s.sums2 += w[j] * texelFetch(sums2, q[j], 0);
-        }
+        if (layers > 0) s.sums1 += w[j] * texelFetch(sums1, q[j], 0);
+        if (layers > 1) s.sums2 += w[j] * texelFetch(sums2, q[j], 0);
+        if (layers > 2) s.sums3 += w[j] * texelFetch(sums3, q[j], 0);
     }
     if (depthWeight > 0.0) {
         s.front /= depthWeight;
         s.back /= depthWeight;
     }
     return s;
-}
-
-// Bilinear read of one more additive impostor layer (the depth moments τ·mean, τ·mean²).
-vec4 readImpostorLayer(sampler2D layer, BlockTile tile, vec2 texel) {
-    ivec2 q[4];
-    float w[4];
-    tileBilinear(tile, texel, q, w);
-    vec4 sum = vec4(0.0);
-    for (int j = 0; j < 4; ++j) sum += w[j] * texelFetch(layer, q[j], 0);
-    return sum;
 }

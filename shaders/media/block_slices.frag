@@ -22,7 +22,7 @@ layout(location = 0) out vec4 outSlices[8];
 void main() {
     BlockTile tile = blockTiles[vBlock];
     vec2 ndc = gl_FragCoord.xy / uViewportSize * 2.0 - 1.0;
-    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorMoments, uImpostorMoments, true, tile, tileTexel(tile, ndc));
+    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorMoments, uImpostorMoments, uImpostorMoments, 1, tile, tileTexel(tile, ndc));
     if (!(s.tau > 0.0)) discard;
     vec3 origin, dir;
     viewRay(ndc, uInverseViewProjection, uView, uParams.x > 0.5, uLightOrigin, origin, dir);
