@@ -43,7 +43,7 @@ void main() {
     float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
     if (tSurface <= s.front) discard;  // the block lies wholly behind the surface
     // The share of the block's optical depth in front of the surface, with the depth profile the
-    // impostor's moments give (block_data.glsl blockProfile).
+    // impostor's moments give (block_lighting.glsl blockProfile).
     vec2 moments = s.sums3.xy / s.tau;
     BlockProfile profile = blockProfile(s.front, s.back, vec2(moments.x + tile.instance.x, moments.y + tile.instance.x * (2.0 * moments.x + tile.instance.x)));
     float tau = s.tau * profileMassBefore(profile, tSurface);

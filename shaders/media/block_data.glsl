@@ -22,12 +22,12 @@ vec2 tileNdc(BlockTile tile, vec2 texel) {
 }
 
 // One impostor sample: total optical depth, front and back ray distances (seed 000 §2.1), and the
-// optical-depth-weighted sums of shading position, albedo, emission and g.
+// optical-depth-weighted sums of albedo, emission, g and the depth moments.
 struct ImpostorSample {
     float tau;
     float front;
     float back;
-    vec4 sums1;  // τ·t_shade, τ·albedo (light impostors: the depth moments)
+    vec4 sums1;  // x free, yzw τ·albedo (light impostors: the depth moments)
     vec4 sums2;  // τ·emission, τ·g
     vec4 sums3;  // camera impostors: τ·mean, τ·(variance + mean²) of the depth along the ray
 };

@@ -2,7 +2,7 @@
 // One particle's share of a block impostor texel, along the exact view ray the texel stands for.
 // Target 0 blends MIN on rgb and ADD on alpha (seed 000 §2.1, one pass): r = front (ray distance
 // where the first particle starts), g = −back, a = optical depth. Targets 1 and 2 add the
-// optical-depth-weighted shading position, albedo, emission and g (camera impostors only).
+// optical-depth-weighted albedo, emission and g (camera impostors only), target 3 the depth moments.
 #include "common/math.glsl"
 #include "media/optics.glsl"
 #include "media/particle_data.glsl"
@@ -20,7 +20,7 @@ flat in int vBlock;
 layout(location = 0) out vec4 outDepths;
 layout(location = 1) out vec4 outSums1;
 layout(location = 2) out vec4 outSums2;
-layout(location = 3) out vec4 outMoments;  // light impostors: τ·mean, τ·(variance + mean²) along the ray
+layout(location = 3) out vec4 outMoments;  // τ·mean, τ·(variance + mean²) of the depth along the ray
 
 void main() {
     GpuParticle particle = particles[vParticle];
@@ -33,15 +33,15 @@ void main() {
     if (chord.halfChord <= 0.0 || lo >= chord.halfChord) discard;
     float tau = particle.albedoSigma.w * chordIntegral(chord, radius, lo, chord.halfChord);
     if (!(tau > 0.0)) discard;
-    float tShade = chord.tClosest + chordShadingPoint(chord, radius, lo, chord.halfChord, tau);
-    // Front and back of the particle's mass, not of its truncation sphere: the uniform density a
-    // block assumes between them (seed 000 §2.4) matches a Gaussian of deviation s = R/3 best
-    // (same mean and variance) over ±√3·s, so that is the extent each particle contributes.
+    // Front and back of the particle's mass, not of its truncation sphere: a uniform density
+    // between them (seed 000 §2.4) matches a Gaussian of deviation s = R/3 best (same mean and
+    // variance) over ±√3·s, so that is the extent each particle contributes to the interval a
+    // block's depth profile is cut to.
     float extent = min(chord.halfChord, 1.7320508 * radius / 3.0);
     float front = chord.tClosest + max(lo, -extent);
     float back = chord.tClosest + max(extent, lo);
     outDepths = vec4(front, -back, 0.0, tau);
-    outSums1 = tau * vec4(tShade, particle.albedoSigma.rgb);
+    outSums1 = tau * vec4(0.0, particle.albedoSigma.rgb);  // x: free
     outSums2 = tau * vec4(particle.emissionG.rgb, particle.emissionG.w);
     vec2 moments = chordMoments(chord, radius, lo, chord.halfChord);
     float mean = chord.tClosest + moments.x;

@@ -65,20 +65,13 @@ float blockLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float ta
 }
 
 // segmentVisibility for a block's segment [front, back] of the ray: the lit fraction is the lit
-// share of the block's mass along the ray (block_data.glsl BlockProfile).
+// share of the block's mass along the ray (BlockProfile).
 float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile, float t, float softness) {
     float soft, crossing;
     bool litInFront;
     if (!meshShadowCrossing(i, origin, dir, profile.front, t, profile.back, softness, soft, crossing, litInFront)) return soft;
     float before = profileMassBefore(profile, crossing);  // share of the mass in front of the crossing
     return clamp(litInFront ? before : 1.0 - before, 0.0, 1.0);
-}
-
-// Where the in-scattering of a segment of uniform density and optical depth τ, seen from its front,
-// is centred: at the e^−v-weighted mean optical depth v̄ (chordShadingPoint's rule for a uniform
-// profile), as a share of the segment's length.
-float uniformShadingFraction(float tau) {
-    return tau < 1e-3 ? 0.5 - tau / 12.0 : (1.0 - (1.0 + tau) * exp(-tau)) / (tau * oneMinusExpNeg(tau));
 }
 
 // A block is shaded at this many points along its visible segment: one point missed how the light
@@ -97,7 +90,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float tau, 
     float t0 = profile.front, t1 = profile.back;
     float pieceTau = tau / float(BLOCK_SHADING_PIECES), pieceLength = (t1 - t0) / float(BLOCK_SHADING_PIECES);
     float pieceAlpha = oneMinusExpNeg(pieceTau), alpha = oneMinusExpNeg(tau);
-    float shadeAt = uniformShadingFraction(pieceTau) * pieceLength;
+    float shadeAt = shadingDepthFraction(pieceTau) * pieceLength;  // uniform density: v̄ is that share of the length
     vec3 scattered = frame.ambient.rgb;
     float radius = block.positionRadius.w;
     for (int i = 0; i < frame.counts.x; ++i) {

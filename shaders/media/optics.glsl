@@ -108,11 +108,16 @@ float erfInverse(float x) {
 // enters it; for J linear in v that equals J(v̄)(1 − e^−τ) at v̄ = (1 − (1+τ)e^−τ)/(1 − e^−τ), the
 // e^−v-weighted mean (τ/2 for a thin particle, → 1 for a thick one: its front is what is seen).
 // Returns the u at which the kernel's cumulative optical depth from u0 reaches v̄.
+// v̄/τ: the share of the layer's optical depth in front of that point.
+float shadingDepthFraction(float tau) {
+    return tau < 1e-3 ? 0.5 - tau / 12.0 : (1.0 - (1.0 + tau) * exp(-tau)) / (tau * oneMinusExpNeg(tau));
+}
+
 float chordShadingPoint(Chord c, float radius, float u0, float u1, float tau) {
     float lo = max(u0, -c.halfChord);
     float hi = min(u1, c.halfChord);
     if (hi <= lo) return 0.5 * (lo + hi);
-    float fraction = tau < 1e-3 ? 0.5 - tau / 12.0 : (1.0 - (1.0 + tau) * exp(-tau)) / (tau * oneMinusExpNeg(tau));
+    float fraction = shadingDepthFraction(tau);
     float sk = sqrt(KERNEL_FALLOFF) / radius;
     float a = erfApprox(sk * lo), b = erfApprox(sk * hi);
     return clamp(erfInverse(a + fraction * (b - a)) / sk, lo, hi);

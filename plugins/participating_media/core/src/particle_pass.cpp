@@ -3,7 +3,6 @@
 // multiplied by 1 − α per particle), so the compose pass needs no extra state.
 #include "media_passes.h"
 
-#include "lamp_neighbourhood.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/render/frame_data.h"
 
