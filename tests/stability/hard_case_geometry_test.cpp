@@ -21,10 +21,10 @@ using media::MediaMode;
 // eye); a block containing the eye has no sensible screen rectangle.
 // What prevents it: shaders/media/particles.vert covers the whole screen when the eye is in or near
 // the sphere; particles.frag starts the chord at the eye (u0 = max(0, t_enter) − t_closest);
-// block_impostors.frag likewise (lo = max(−h, −t_closest)); impostor_atlas.cpp blockRectangles
+// block_impostors.frag likewise (lo = max(−h, −t_closest)); impostor_atlas.cpp blockFootprints
 // gives a block that reaches behind the near plane the whole view. Reference: camera_rays.h, the
 // medium is integrated from t = 0.
-// Bound: 15%. Measured: particles 0.22%, blocks 0.70%.
+// Bound: 15%. Measured: particles 0.22%, blocks 0.39%.
 const HardCase kCameraInside{.name = "camera_inside_cloud", .scene = "camera_inside_cloud.gltf", .camera = "inside"};
 
 TEST_F(StabilityTest, CameraInsideCloudStaysFinite) { expectFiniteAndClean(kCameraInside, runCase(context(), kCameraInside)); }
@@ -42,7 +42,7 @@ TEST_F(StabilityTest, CameraInsideCloudWithinBound) {
 // What prevents it: particles.vert covers the screen when −c.z − R ≤ 2·znear; the fragment shader
 // integrates the exact chord from the eye, independent of where the quad is; the reference clips
 // only meshes at znear (camera_rays.h meshNear) and the media pass does the same.
-// Bound: 15%. Measured: particles 0.35%, blocks 0.48%.
+// Bound: 15%. Measured: particles 0.35%, blocks 0.35%.
 const HardCase kNearPlane{.name = "near_plane", .scene = "camera_inside_cloud.gltf", .camera = "near_plane"};
 
 TEST_F(StabilityTest, ParticlesCrossingNearPlaneStayFinite) { expectFiniteAndClean(kNearPlane, runCase(context(), kNearPlane)); }
@@ -65,7 +65,7 @@ TEST_F(StabilityTest, ParticlesCrossingNearPlaneWithinBound) {
 // 1e-6·max(back, 1) (else 1); particles.frag discards when u1 ≤ u0 before any division;
 // optics.glsl chordCentroid / chordShadingPoint return the middle for an empty or vanishing
 // segment; the reference integrates the medium to the mesh hit (reference_renderer.h).
-// Bound: 15%. Measured: main particles 0.85%, blocks 1.0%; grazing particles 1.4%, blocks 1.4%.
+// Bound: 15%. Measured: main particles 0.87%, blocks 0.74%; grazing particles 1.3%, blocks 1.1%.
 const HardCase kSurfaceThroughCentres{.name = "surface_through_centres",
                                       .scene = "surface_through_centres.gltf",
                                       .camera = "main",
@@ -105,7 +105,7 @@ TEST_F(StabilityTest, SurfaceThroughCentresGrazingWithinBound) {
 // slice_plan.cpp estimateSlices); the reference is all double.
 // Asserted beyond the usual: the far scene's frames equal the at-origin scene's frames (same
 // relative geometry) within 1e-3 rel-RMSE in both modes, and so do the references.
-// Bound: 15%. Measured: particles 0.57%, blocks 0.71%; far vs at origin: 0 (bit-identical).
+// Bound: 15%. Measured: particles 0.49%, blocks 0.51%; far vs at origin: 0 (bit-identical).
 const HardCase kFar{.name = "far_from_origin", .scene = "far_from_origin.gltf"};
 const HardCase kNear{.name = "far_from_origin_at_origin", .scene = "far_from_origin_at_origin.gltf"};
 
@@ -139,9 +139,10 @@ TEST_F(StabilityTest, SceneFarFromOriginRendersLikeAtOrigin) {
 // What prevents it: particles.vert sizes the quad to the tangent cone (the rasteriser then
 // produces exactly the pixels whose centre ray hits the sphere, as in camera_rays.h); optics.glsl
 // chordOf and optics.cpp chordGeometry compute b² from the perpendicular vector; impostor
-// tiles are at least 4 texels (impostor_atlas.cpp tileSizes) and impostor texels are evaluated
-// along their own exact rays (block_impostors.frag).
-// Bound: 15%. Measured: particles 0.29%, blocks 0.26% (the dark background dominates the mean).
+// texels are evaluated along their own exact rays (block_impostors.frag), and a block whose particles
+// are under 2 texels in radius gets one texel per pixel on the pixel grid (impostor_atlas.cpp
+// tileSizes), so its texels are the pixel centres' rays.
+// Bound: 15%. Measured: particles 0.89%, blocks 0.89% (the same pixels: every block's tile is per pixel).
 const HardCase kSubpixel{.name = "subpixel_particles", .scene = "subpixel_particles.gltf"};
 
 TEST_F(StabilityTest, SubpixelParticlesStayFinite) { expectFiniteAndClean(kSubpixel, runCase(context(), kSubpixel)); }
@@ -162,7 +163,7 @@ TEST_F(StabilityTest, SubpixelParticlesWithinBound) {
 // covers the screen when the sphere reaches within 2·znear of the eye plane; the kernel is
 // evaluated in units of R (optics.glsl chordIntegral uses √k·u); impostor_atlas.cpp clips
 // rectangles to [−1, 1]² and clamps tiles to 256 texels, packAtlas shrinks to the 4096 limit.
-// Bound: 15%. Measured: particles 3.6%, blocks 4.9%.
+// Bound: 15%. Measured: particles 3.7%, blocks 3.5%.
 const HardCase kLarger{.name = "larger_than_screen", .scene = "larger_than_screen.gltf"};
 
 TEST_F(StabilityTest, ParticleLargerThanScreenStaysFinite) { expectFiniteAndClean(kLarger, runCase(context(), kLarger)); }

@@ -32,12 +32,6 @@ using media::MediaMode;
 
 // "<variant stem>/<mode>" → why it is beyond 15% today (the report's finding).
 const std::map<std::string, std::string> kBeyondBound = {
-    {"variant_00_subpixel_tau30_spot_inside_gp0_00_n500/blocks",
-     "sub-pixel particles next to a spot light: the impostor spreads their optical depth over whole texels "
-     "and the 1/d² near the light turns that into radiance 0.41 where the reference has 0"},
-    {"variant_02_subpixel_tau10000_antiparallel_gm0_99_n2000_far/blocks",
-     "opaque sub-pixel particles: bilinear optical depth from a half-resolution impostor drops some and "
-     "spreads others (4% of pixels off by > 1e-3)"},
     {"variant_04_normal_tau1em05_antiparallel_gp0_99_n1_through/particles",
      "one particle of τ 1e-5 centred on the ground, seen from below looking into the sun, g = 0.99, on black: "
      "the image is the phase peak (max 0.0078, 1600× the image mean), its pixels are off by up to 1.7% in "
@@ -53,8 +47,6 @@ const std::map<std::string, std::string> kBeyondBound = {
      "The block light slices spread a block's τ by a Gaussian of its depth moments, cut at the lamp: for a "
      "particle centred near the lamp that puts a third of the true density at the lamp, so its light reaches "
      "too far in (5% too bright where lit, more at the beam's end)"},
-    {"variant_09_subpixel_tau1em05_perpendicular_gp0_99_n500/blocks",
-     "13 sub-pixel particles of τ 1e-5 on black: the impostor loses them (the image is otherwise 0)"},
 };
 
 std::vector<std::string> variantScenes() {

@@ -126,11 +126,11 @@ ImpostorView orthographicView(const glm::dvec3& target, const glm::dvec3& dir, c
 // plane projects inside the block's rectangle (rectangles are clipped to the view).
 void expectRectanglesHoldSpheres(const BlockPartition& p, const ImpostorView& view, const glm::dvec3& origin,
                                  int& checkedPoints) {
-    const std::vector<glm::vec4> rects = blockRectangles(p, view, origin);
-    ASSERT_EQ(rects.size(), p.blocks.size());
+    const std::vector<BlockFootprint> footprints = blockFootprints(p, view, origin);
+    ASSERT_EQ(footprints.size(), p.blocks.size());
     const glm::dmat4 vp(view.viewProjection), viewMatrix(view.view);
     for (std::size_t b = 0; b < p.blocks.size(); ++b) {
-        const glm::vec4 r = rects[b];
+        const glm::vec4 r = footprints[b].rect;
         const Block& block = p.blocks[b];
         for (int i = 0; i < 24; ++i)
             for (int j = 0; j <= 12; ++j) {
@@ -180,13 +180,12 @@ TEST(ImpostorAtlas, BlockCrossingTheNearPlaneCoversTheWholeView) {
     for (const glm::dvec3 target : {b.centre, b.centre + glm::dvec3(0.0, 0.0, 10.0)}) {
         const glm::dvec3 eye = b.centre + glm::dvec3(0.0, 0.0, 0.5 * b.radius);
         const render::View v = render::makeView(test::lookAtCamera(eye, target), 160, 90);
-        const auto rects = blockRectangles(p, cameraView(v), v.origin);
-        EXPECT_EQ(rects.front(), glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f));
+        EXPECT_EQ(blockFootprints(p, cameraView(v), v.origin).front().rect, glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f));
     }
     // Eye just outside the sphere, the sphere's front within the near distance: also the whole view.
     const glm::dvec3 eye = b.centre + glm::dvec3(0.0, 0.0, b.radius + 0.05);
     const render::View v = render::makeView(test::lookAtCamera(eye, b.centre, 0.7, 0.1), 160, 90);
-    EXPECT_EQ(blockRectangles(p, cameraView(v), v.origin).front(), glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f));
+    EXPECT_EQ(blockFootprints(p, cameraView(v), v.origin).front().rect, glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f));
 }
 
 TEST(ImpostorAtlas, BlocksBehindOrBesideTheViewGetZeroRectanglesAndTiles) {
@@ -198,9 +197,9 @@ TEST(ImpostorAtlas, BlocksBehindOrBesideTheViewGetZeroRectanglesAndTiles) {
     const double off = 70.0 * 3.14159265358979 / 180.0;
     for (const glm::dvec3 target : {eye + glm::dvec3(0.0, 0.0, 1.0), eye + glm::dvec3(std::sin(off), 0.0, -std::cos(off))}) {
         const render::View v = render::makeView(test::lookAtCamera(eye, target), 160, 90);
-        const auto rects = blockRectangles(p, cameraView(v), v.origin);
-        EXPECT_EQ(rects.front(), glm::vec4(0.0f));
-        const auto sizes = tileSizes(rects, glm::ivec2(160, 90), 0.5f);
+        const auto footprints = blockFootprints(p, cameraView(v), v.origin);
+        EXPECT_EQ(footprints.front().rect, glm::vec4(0.0f));
+        const auto sizes = tileSizes(footprints, glm::ivec2(160, 90), 0.5f);
         EXPECT_EQ(sizes.front(), glm::ivec2(0));
         EXPECT_EQ(packAtlas(sizes, 256).tiles.front().width, 0);
     }
@@ -208,17 +207,56 @@ TEST(ImpostorAtlas, BlocksBehindOrBesideTheViewGetZeroRectanglesAndTiles) {
 
 TEST(ImpostorAtlas, TileSizesFollowCoveredPixelsTimesScaleClamped) {
     const glm::ivec2 viewport(320, 180);
+    // Particles 10 px in radius: resolved at every scale here, so the tiles follow the scale.
     // A rectangle covering half the view's width and a quarter of its height: 160×45 pixels.
-    const std::vector<glm::vec4> rects = {glm::vec4(-0.5f, -0.25f, 0.5f, 0.25f), glm::vec4(0.0f),
-                                          glm::vec4(0.0f, 0.0f, 0.001f, 0.001f), glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f)};
-    const auto half = tileSizes(rects, viewport, 0.5f);
+    const std::vector<BlockFootprint> footprints = {{glm::vec4(-0.5f, -0.25f, 0.5f, 0.25f), 10.0f},
+                                                    {glm::vec4(0.0f), 10.0f},
+                                                    {glm::vec4(0.0f, 0.0f, 0.001f, 0.001f), 10.0f},
+                                                    {glm::vec4(-1.0f, -1.0f, 1.0f, 1.0f), 10.0f}};
+    const auto half = tileSizes(footprints, viewport, 0.5f);
     EXPECT_EQ(half[0], glm::ivec2(80, 23));   // ceil(160·0.5), ceil(45·0.5)
     EXPECT_EQ(half[1], glm::ivec2(0));        // empty
     EXPECT_EQ(half[2], glm::ivec2(4));        // at least 4 texels
     EXPECT_EQ(half[3], glm::ivec2(160, 90));
-    const auto big = tileSizes(rects, viewport, 4.0f);
+    const auto big = tileSizes(footprints, viewport, 4.0f);
     EXPECT_EQ(big[0], glm::ivec2(256, 180));  // at most 256
     EXPECT_EQ(big[3], glm::ivec2(256, 256));
+}
+
+TEST(ImpostorAtlas, BlocksOfUnresolvedParticlesGetOneTexelPerPixel) {
+    const glm::ivec2 viewport(320, 180);
+    // 3.9 px particles are 1.95 texels in radius at scale 0.5 (< kResolvedParticleTexels): per pixel.
+    const std::vector<BlockFootprint> small = {{glm::vec4(-0.5f, -0.25f, 0.5f, 0.25f), 3.9f},
+                                               {glm::vec4(0.0f, 0.0f, 4.0f / 320.0f, 4.0f / 180.0f), 0.2f}};
+    const auto sizes = tileSizes(small, viewport, 0.5f);
+    EXPECT_EQ(sizes[0], glm::ivec2(160, 45));
+    EXPECT_EQ(sizes[1], glm::ivec2(2, 2));  // no minimum of 4: the texels stay on the pixels
+    EXPECT_EQ(tileSizes({{small[0].rect, 4.1f}}, viewport, 0.5f).front(), glm::ivec2(80, 23));
+    EXPECT_EQ(tileSizes(small, viewport, 2.0f).front(), glm::ivec2(256, 90));  // finer than a pixel stays so
+}
+
+TEST(ImpostorAtlas, FootprintsLieOnThePixelGridAndMeasureTheParticles) {
+    const ParticleSet set = test::blobCloud(500, 5);
+    const BlockPartition p = partitionIntoBlocks(set, 0);
+    const render::View v = render::makeView(test::lookAtCamera(glm::dvec3(0.0, 8.5, 12.5), glm::dvec3(0.0, 4.0, 0.0)), 320, 180);
+    const ImpostorView view = cameraView(v);
+    const auto footprints = blockFootprints(p, view, v.origin);
+    const glm::dmat4 viewMatrix(view.view);
+    const double focalPixels = 0.5 * 180.0 / v.tanHalfFovY;
+    int visible = 0;
+    for (std::size_t b = 0; b < p.blocks.size(); ++b) {
+        const glm::vec4 r = footprints[b].rect;
+        if (r.z <= r.x) continue;
+        ++visible;
+        for (int k = 0; k < 4; ++k) {
+            const float pixel = (r[k] * 0.5f + 0.5f) * (k % 2 == 0 ? 320.0f : 180.0f);
+            EXPECT_NEAR(pixel, std::round(pixel), 1e-3f) << "block " << b << " edge " << k;
+        }
+        const double depth = -(viewMatrix * glm::dvec4(p.blocks[b].centre - v.origin, 1.0)).z;
+        EXPECT_NEAR(footprints[b].particlePixels, p.blocks[b].meanParticleRadius * focalPixels / depth,
+                    1e-3 * footprints[b].particlePixels);
+    }
+    EXPECT_GT(visible, 10);
 }
 
 }  // namespace

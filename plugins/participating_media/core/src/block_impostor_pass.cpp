@@ -23,13 +23,13 @@ BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView&
                             int maxAtlasSize) {
     BlockViewPlan plan;
     plan.view = view;
-    const std::vector<glm::vec4> rects = blockRectangles(partition, view, origin);
-    const AtlasLayout layout = packAtlas(tileSizes(rects, view.viewport, scale), maxAtlasSize);
+    const std::vector<BlockFootprint> footprints = blockFootprints(partition, view, origin);
+    const AtlasLayout layout = packAtlas(tileSizes(footprints, view.viewport, scale), maxAtlasSize);
     plan.atlasSize = glm::ivec2(layout.width, layout.height);
     plan.tiles.resize(partition.blocks.size());
     for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
         const AtlasTile& t = layout.tiles[b];
-        plan.tiles[b].rect = rects[b];
+        plan.tiles[b].rect = footprints[b].rect;
         plan.tiles[b].atlas = glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y), static_cast<float>(t.width),
                                         static_cast<float>(t.height));
         plan.tiles[b].centreRadius = glm::vec4(glm::vec3(partition.blocks[b].centre - origin), partition.blocks[b].meanParticleRadius);
@@ -45,9 +45,9 @@ BlockViewPlan planInstancedBlockView(const BlockPartition& partition, std::size_
     for (Block& b : shapes.blocks) b.radius = partition.blocks[prototype].radius;
     BlockViewPlan plan;
     plan.view = view;
-    const std::vector<glm::vec4> rects = blockRectangles(shapes, view, origin);
-    std::vector<glm::ivec2> sizes(rects.size(), glm::ivec2(0));
-    sizes[prototype] = tileSizes({rects[prototype]}, view.viewport, scale).front();
+    const std::vector<BlockFootprint> footprints = blockFootprints(shapes, view, origin);
+    std::vector<glm::ivec2> sizes(footprints.size(), glm::ivec2(0));
+    sizes[prototype] = tileSizes({footprints[prototype]}, view.viewport, scale).front();
     const AtlasLayout layout = packAtlas(sizes, maxAtlasSize);
     const AtlasTile& t = layout.tiles[prototype];
     plan.atlasSize = glm::ivec2(layout.width, layout.height);
@@ -60,8 +60,8 @@ BlockViewPlan planInstancedBlockView(const BlockPartition& partition, std::size_
     plan.tiles.resize(partition.blocks.size());
     for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
         GpuBlockTile& tile = plan.tiles[b];
-        tile.rect = rects[b];
-        const bool visible = rects[b].z > rects[b].x && t.width > 0;
+        tile.rect = footprints[b].rect;
+        const bool visible = tile.rect.z > tile.rect.x && t.width > 0;
         tile.atlas = visible ? glm::vec4(static_cast<float>(t.x), static_cast<float>(t.y), static_cast<float>(t.width),
                                          static_cast<float>(t.height))
                              : glm::vec4(0.0f);

@@ -56,17 +56,23 @@ AtlasLayout packAtlas(const std::vector<glm::ivec2>& requested, int maxSize) {
     return layout;
 }
 
-std::vector<glm::vec4> blockRectangles(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin) {
-    std::vector<glm::vec4> rects;
-    rects.reserve(partition.blocks.size());
+std::vector<BlockFootprint> blockFootprints(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin) {
+    std::vector<BlockFootprint> footprints;
+    footprints.reserve(partition.blocks.size());
     const glm::dmat4 viewMatrix(view.view);
     const glm::dmat4 projection = glm::dmat4(view.viewProjection) * glm::inverse(viewMatrix);
+    const glm::dvec2 viewport(view.viewport);
+    // Pixels per unit of view-space length at clip w = 1 (the smaller axis: a round particle).
+    const double pixelsPerUnit = 0.5 * std::min(std::abs(projection[0][0]) * viewport.x, std::abs(projection[1][1]) * viewport.y);
     for (const Block& b : partition.blocks) {
         const glm::dvec3 c = glm::dvec3(viewMatrix * glm::dvec4(b.centre - origin, 1.0));
+        BlockFootprint footprint;
+        const double w = view.perspective ? std::max(-c.z, static_cast<double>(view.nearDepth)) : 1.0;
+        footprint.particlePixels = static_cast<float>(b.meanParticleRadius * pixelsPerUnit / std::max(w, 1e-30));
         glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
         if (view.perspective && -c.z - b.radius <= static_cast<double>(view.nearDepth)) {
             if (-c.z + b.radius <= static_cast<double>(view.nearDepth)) {
-                rects.emplace_back(0.0f);  // wholly behind: nothing to draw
+                footprints.push_back({});  // wholly behind: nothing to draw
                 continue;
             }
             lo = glm::dvec2(-1.0), hi = glm::dvec2(1.0);  // crosses the near plane: be conservative
@@ -79,24 +85,30 @@ std::vector<glm::vec4> blockRectangles(const BlockPartition& partition, const Im
                 hi = glm::max(hi, ndc);
             }
         }
-        lo = glm::clamp(lo, -1.0, 1.0);
-        hi = glm::clamp(hi, -1.0, 1.0);
-        if (hi.x <= lo.x || hi.y <= lo.y) rects.emplace_back(0.0f);
-        else rects.emplace_back(lo.x, lo.y, hi.x, hi.y);
+        // Out to whole pixels, so a tile of one texel per pixel has its texel centres on pixel centres.
+        lo = glm::floor((glm::clamp(lo, -1.0, 1.0) * 0.5 + 0.5) * viewport) / viewport * 2.0 - 1.0;
+        hi = glm::ceil((glm::clamp(hi, -1.0, 1.0) * 0.5 + 0.5) * viewport) / viewport * 2.0 - 1.0;
+        if (hi.x > lo.x && hi.y > lo.y) footprint.rect = glm::vec4(lo.x, lo.y, hi.x, hi.y);
+        footprints.push_back(footprint);
     }
-    return rects;
+    return footprints;
 }
 
-std::vector<glm::ivec2> tileSizes(const std::vector<glm::vec4>& rects, const glm::ivec2& viewport, float scale) {
+std::vector<glm::ivec2> tileSizes(const std::vector<BlockFootprint>& footprints, const glm::ivec2& viewport, float scale) {
     std::vector<glm::ivec2> sizes;
-    sizes.reserve(rects.size());
-    for (const glm::vec4& r : rects) {
+    sizes.reserve(footprints.size());
+    for (const BlockFootprint& f : footprints) {
+        const glm::vec4& r = f.rect;
         if (r.z <= r.x || r.w <= r.y) {
             sizes.emplace_back(0);
             continue;
         }
-        const glm::vec2 pixels = glm::vec2(r.z - r.x, r.w - r.y) * 0.5f * glm::vec2(viewport) * scale;
-        sizes.emplace_back(glm::clamp(glm::ivec2(glm::ceil(pixels)), glm::ivec2(kMinTile), glm::ivec2(kMaxTile)));
+        // A tile on the pixel grid keeps one texel per pixel however small; others get kMinTile.
+        const bool perPixel = f.particlePixels * scale < kResolvedParticleTexels && scale <= 1.0f;
+        const float density = perPixel ? 1.0f : scale;
+        const glm::vec2 pixels = glm::vec2(r.z - r.x, r.w - r.y) * 0.5f * glm::vec2(viewport);
+        const glm::ivec2 texels(glm::ceil(pixels * density - 1e-3f));  // a snapped rectangle's float pixels may be n + ε
+        sizes.emplace_back(glm::clamp(texels, glm::ivec2(perPixel ? 1 : kMinTile), glm::ivec2(kMaxTile)));
     }
     return sizes;
 }

@@ -34,11 +34,22 @@ struct ImpostorView {
     glm::ivec2 viewport{1, 1};    // pixels (the camera) or texels (a light view's slices)
 };
 
-// Each block's rectangle in the view's NDC (xy min, zw max), clipped to [-1, 1]²; zero area when the
-// block is off-screen. A block that reaches behind the near plane covers the whole view.
-std::vector<glm::vec4> blockRectangles(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin);
+// A block as one view sees it.
+struct BlockFootprint {
+    glm::vec4 rect{0.0f};          // NDC xy min, zw max: clipped to [-1, 1]², widened to whole viewport pixels
+    float particlePixels = 0.0f;   // the block's mean particle radius in viewport pixels, at the block's centre
+};
 
-// Tile sizes for those rectangles: rectangle pixels × scale, clamped to [4, 256] per side.
-std::vector<glm::ivec2> tileSizes(const std::vector<glm::vec4>& rectangles, const glm::ivec2& viewport, float scale);
+// Each block's footprint; a zero-area rectangle when the block is off-view. A block that reaches
+// behind the near plane covers the whole view.
+std::vector<BlockFootprint> blockFootprints(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin);
+
+// Tile sizes for those footprints: rectangle pixels × texel density, clamped to [4, 256] per side.
+// The density is `scale`, raised to one texel per pixel for a block whose particles would be less
+// than kResolvedParticleTexels texels in radius: such a tile samples every pixel centre's own ray
+// (the rectangle is on the pixel grid), as the composite, `particles` mode and the reference do,
+// instead of spreading or losing particles smaller than its texels.
+inline constexpr float kResolvedParticleTexels = 2.0f;
+std::vector<glm::ivec2> tileSizes(const std::vector<BlockFootprint>& footprints, const glm::ivec2& viewport, float scale);
 
 }  // namespace nimbus::media
