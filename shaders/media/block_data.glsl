@@ -9,6 +9,10 @@ struct BlockTile {
 layout(std430, binding = 6) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)
 layout(std430, binding = 7) readonly buffer BlockTiles { BlockTile blockTiles[]; };
 
+// How far beyond a particle's silhouette, in tile texels, its impostor quad reaches: more than the
+// √2 texels from a pixel centre to the farthest texel of its bilinear read.
+const float kEdgeBand = 1.5;
+
 // Where a view NDC position falls in a tile, in atlas texels.
 vec2 tileTexel(BlockTile tile, vec2 ndc) {
     vec2 local = (ndc - tile.rect.xy) / (tile.rect.zw - tile.rect.xy);
@@ -46,16 +50,19 @@ void tileBilinear(BlockTile tile, vec2 texel, out ivec2 q[4], out float w[4]) {
 
 // Bilinear read of the depths and the first `layers` (0..3) additive layers inside one tile.
 // Depths are averaged over the texels that hold particles only (an empty texel's depths are
-// sentinels); optical depth and the sums are plain bilinear, so they fade to zero at the silhouette.
+// sentinels); optical depth and the sums are plain bilinear, cut to zero where the bilinear edge
+// distance says the ray passes outside every particle (a texel wider than a pixel would otherwise
+// spread optical depth up to a texel beyond the silhouette).
 ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, sampler2D sums3, int layers, BlockTile tile,
                             vec2 texel) {
     ivec2 q[4];
     float w[4];
     tileBilinear(tile, texel, q, w);
     ImpostorSample s = ImpostorSample(0.0, 0.0, 0.0, vec4(0.0), vec4(0.0), vec4(0.0));
-    float depthWeight = 0.0;
+    float depthWeight = 0.0, edge = 0.0;
     for (int j = 0; j < 4; ++j) {
         vec4 d = texelFetch(depths, q[j], 0);
+        edge += w[j] * d.b;
         s.tau += w[j] * d.a;
         if (d.a > 0.0) {
             s.front += w[j] * d.r;
@@ -66,6 +73,7 @@ ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, 
         if (layers > 1) s.sums2 += w[j] * texelFetch(sums2, q[j], 0);
         if (layers > 2) s.sums3 += w[j] * texelFetch(sums3, q[j], 0);
     }
+    if (!(edge <= 0.0)) return ImpostorSample(0.0, 0.0, 0.0, vec4(0.0), vec4(0.0), vec4(0.0));  // outside the silhouette
     if (depthWeight > 0.0) {
         s.front /= depthWeight;
         s.back /= depthWeight;

@@ -1,7 +1,7 @@
 #version 450 core
 // One particle's share of a block impostor texel, along the exact view ray the texel stands for.
 // Target 0 blends MIN on rgb and ADD on alpha (seed 000 §2.1, one pass): r = front (ray distance
-// where the first particle starts), g = −back, a = optical depth. Targets 1 and 2 add the
+// where the first particle starts), g = −back, b = edge distance, a = optical depth. Targets 1 and 2 add the
 // optical-depth-weighted albedo, emission and g (camera impostors only), target 3 the depth moments.
 #include "common/math.glsl"
 #include "media/optics.glsl"
@@ -29,8 +29,17 @@ void main() {
     viewRay(tileNdc(tile, gl_FragCoord.xy), uInverseViewProjection, uView, uParams.x > 0.5, uEye, origin, dir);
     float radius = particle.positionRadius.w;
     Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, radius);
+    // Blue (MIN) holds the edge distance: how far the ray passes outside the particle's sphere,
+    // negative inside, as an angle for a perspective view so particles at different distances
+    // compare. Its bilinear read crosses zero at the silhouette, where optical depth jumps to zero.
+    float edge = (sqrt(chord.b2) - radius) / (uParams.x > 0.5 ? max(abs(chord.tClosest), radius) : 1.0);
     float lo = max(-chord.halfChord, -chord.tClosest);  // rays start at the eye (or the view plane)
-    if (chord.halfChord <= 0.0 || lo >= chord.halfChord) discard;
+    if (chord.halfChord > 0.0 && lo >= chord.halfChord) discard;  // the chord is behind the eye
+    if (chord.halfChord <= 0.0) {
+        outDepths = vec4(3.0e38, 3.0e38, edge, 0.0);
+        outSums1 = outSums2 = outMoments = vec4(0.0);
+        return;
+    }
     float tau = particle.albedoSigma.w * chordIntegral(chord, radius, lo, chord.halfChord);
     if (!(tau > 0.0)) discard;
     // Front and back of the particle's mass, not of its truncation sphere: a uniform density
@@ -40,7 +49,7 @@ void main() {
     float extent = min(chord.halfChord, 1.7320508 * radius / 3.0);
     float front = chord.tClosest + max(lo, -extent);
     float back = chord.tClosest + max(extent, lo);
-    outDepths = vec4(front, -back, 0.0, tau);
+    outDepths = vec4(front, -back, edge, tau);
     outSums1 = tau * vec4(0.0, particle.albedoSigma.rgb);  // x: free
     outSums2 = tau * vec4(particle.emissionG.rgb, particle.emissionG.w);
     vec2 moments = chordMoments(chord, radius, lo, chord.halfChord);

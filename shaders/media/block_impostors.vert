@@ -48,6 +48,9 @@ void main() {
             ndc = clip.xy / clip.w;
         }
     }
+    // kEdgeBand texels more on every side: texels just outside the particle get its edge distance
+    // (block_impostors.frag), so every texel of a covered pixel's bilinear read has one.
+    ndc += corner * kEdgeBand * (tile.rect.zw - tile.rect.xy) / tile.atlas.zw;
     vec2 texel = tileTexel(tile, ndc);
     vec2 local = (texel - tile.atlas.xy) / tile.atlas.zw;
     gl_ClipDistance[0] = local.x;

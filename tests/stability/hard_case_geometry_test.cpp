@@ -140,7 +140,7 @@ TEST_F(StabilityTest, SceneFarFromOriginRendersLikeAtOrigin) {
 // produces exactly the pixels whose centre ray hits the sphere, as in camera_rays.h); optics.glsl
 // chordOf and optics.cpp chordGeometry compute b² from the perpendicular vector; impostor
 // texels are evaluated along their own exact rays (block_impostors.frag), and a block whose particles
-// are under 2 texels in radius gets one texel per pixel on the pixel grid (impostor_atlas.cpp
+// are under 4 texels in radius gets one texel per pixel on the pixel grid (impostor_atlas.cpp
 // tileSizes), so its texels are the pixel centres' rays.
 // Bound: 15%. Measured: particles 0.89%, blocks 0.89% (the same pixels: every block's tile is per pixel).
 const HardCase kSubpixel{.name = "subpixel_particles", .scene = "subpixel_particles.gltf"};

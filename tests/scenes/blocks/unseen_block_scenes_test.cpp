@@ -46,17 +46,15 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
 // The seam criterion of cloud_blocks_test.cpp: in the band of pixels where the wing lies inside
 // the cloud, blocks err less than billboards without soft particles. Seam band rel_rmse, blocks
 // (2√N blocks) vs particles with soft_particles=off:
-//   passing: 00 0.66% vs 1.26%, 02 4.37% vs 4.92%, 03 0.70% vs 0.93%, 04 10.9% vs 38.9%,
-//            05 3.61% vs 3.98%, 07 6.90% vs 8.67%, 08 4.91% vs 7.27%, 09 1.86% vs 4.19%
-//   failing: 01 4.31% vs 4.19%, 06 1.14% vs 1.13%
-// Only 00 passed while a block was cut at the surface uniformly over [front, back] and shaded at
-// one point (block_lighting.glsl BlockProfile, BLOCK_SHADING_PIECES). Three pieces: 06 passes
-// (1.11%), 01 and 05 fail (4.57%, 3.99% vs 3.98%). With one particle per block all ten pass;
-// 3√N or 4√N blocks move single scenes either way without a trend.
-const char* const kSeamPassing[] = {"block_scene_00", "block_scene_02", "block_scene_03", "block_scene_04",
-                                    "block_scene_05", "block_scene_07", "block_scene_08", "block_scene_09"};
-const char* const kSeamFailing[] = {"block_scene_01", "block_scene_06"};
-
+//   00 0.66% vs 1.26%, 01 4.12% vs 4.19%, 02 4.39% vs 4.92%, 03 0.70% vs 0.93%, 04 10.9% vs 38.9%,
+//   05 3.59% vs 3.98%, 06 1.04% vs 1.13%, 07 6.90% vs 8.67%, 08 4.91% vs 7.27%, 09 1.86% vs 4.19%
+// 01 and 06 failed (4.31%, 1.14%) until impostors cut optical depth at the particles' silhouette
+// and gave small particles a texel per pixel (impostor_atlas.h). Only 00 passed while a block was
+// cut at the surface uniformly over [front, back] and shaded at one point (block_lighting.glsl
+// BlockProfile, BLOCK_SHADING_PIECES). The margins on 01 and 06 are small, and the criterion is
+// not met everywhere: on scenes from the generator's seeds 9100 and 9200 (not committed) it held
+// on 16 of 20 (failing 9100/02 3.13% vs 2.79%, 9100/04 7.7% vs 6.1%, 9100/05 2.46% vs 1.66%,
+// 9200/04 11.7% vs 10.5%).
 class UnseenSeamBandTest : public GlSceneTest, public ::testing::WithParamInterface<const char*> {};
 
 TEST_P(UnseenSeamBandTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
@@ -74,9 +72,7 @@ TEST_P(UnseenSeamBandTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
 std::string sceneName(const ::testing::TestParamInfo<const char*>& scene) { return scene.param; }
 
 INSTANTIATE_TEST_SUITE_P(Generated, UnseenBlockScenesTest, ::testing::ValuesIn(kScenes), sceneName);
-INSTANTIATE_TEST_SUITE_P(Generated, UnseenSeamBandTest, ::testing::ValuesIn(kSeamPassing), sceneName);
-// DISABLED until blocks beat billboards in the band on these too (see the numbers above).
-INSTANTIATE_TEST_SUITE_P(DISABLED_KnownFailing, UnseenSeamBandTest, ::testing::ValuesIn(kSeamFailing), sceneName);
+INSTANTIATE_TEST_SUITE_P(Generated, UnseenSeamBandTest, ::testing::ValuesIn(kScenes), sceneName);
 
 TEST(UnseenBlockScenes, EveryGeneratedSceneIsJudged) {
     // A scene added by the generator must be listed above, never skipped silently.
@@ -85,10 +81,6 @@ TEST(UnseenBlockScenes, EveryGeneratedSceneIsJudged) {
         if (entry.path().extension() == ".gltf") files.insert(entry.path().stem().string());
     for (const char* name : kScenes) listed.insert(name);
     EXPECT_EQ(files, listed);
-    std::set<std::string> seamListed;
-    for (const char* name : kSeamPassing) seamListed.insert(name);
-    for (const char* name : kSeamFailing) seamListed.insert(name);
-    EXPECT_EQ(files, seamListed);
     EXPECT_GE(files.size(), 8u);
 }
 

@@ -207,7 +207,7 @@ TEST(ImpostorAtlas, BlocksBehindOrBesideTheViewGetZeroRectanglesAndTiles) {
 
 TEST(ImpostorAtlas, TileSizesFollowCoveredPixelsTimesScaleClamped) {
     const glm::ivec2 viewport(320, 180);
-    // Particles 10 px in radius: resolved at every scale here, so the tiles follow the scale.
+    // Particles 10 px in radius: resolved at both scales here, so the tiles follow the scale.
     // A rectangle covering half the view's width and a quarter of its height: 160×45 pixels.
     const std::vector<BlockFootprint> footprints = {{glm::vec4(-0.5f, -0.25f, 0.5f, 0.25f), 10.0f},
                                                     {glm::vec4(0.0f), 10.0f},
@@ -225,13 +225,13 @@ TEST(ImpostorAtlas, TileSizesFollowCoveredPixelsTimesScaleClamped) {
 
 TEST(ImpostorAtlas, BlocksOfUnresolvedParticlesGetOneTexelPerPixel) {
     const glm::ivec2 viewport(320, 180);
-    // 3.9 px particles are 1.95 texels in radius at scale 0.5 (< kResolvedParticleTexels): per pixel.
-    const std::vector<BlockFootprint> small = {{glm::vec4(-0.5f, -0.25f, 0.5f, 0.25f), 3.9f},
+    // 7.9 px particles are 3.95 texels in radius at scale 0.5 (< kResolvedParticleTexels): per pixel.
+    const std::vector<BlockFootprint> small = {{glm::vec4(-0.5f, -0.25f, 0.5f, 0.25f), 7.9f},
                                                {glm::vec4(0.0f, 0.0f, 4.0f / 320.0f, 4.0f / 180.0f), 0.2f}};
     const auto sizes = tileSizes(small, viewport, 0.5f);
     EXPECT_EQ(sizes[0], glm::ivec2(160, 45));
     EXPECT_EQ(sizes[1], glm::ivec2(2, 2));  // no minimum of 4: the texels stay on the pixels
-    EXPECT_EQ(tileSizes({{small[0].rect, 4.1f}}, viewport, 0.5f).front(), glm::ivec2(80, 23));
+    EXPECT_EQ(tileSizes({{small[0].rect, 8.1f}}, viewport, 0.5f).front(), glm::ivec2(80, 23));
     EXPECT_EQ(tileSizes(small, viewport, 2.0f).front(), glm::ivec2(256, 90));  // finer than a pixel stays so
 }
 

@@ -47,9 +47,12 @@ std::vector<BlockFootprint> blockFootprints(const BlockPartition& partition, con
 // Tile sizes for those footprints: rectangle pixels × texel density, clamped to [4, 256] per side.
 // The density is `scale`, raised to one texel per pixel for a block whose particles would be less
 // than kResolvedParticleTexels texels in radius: such a tile samples every pixel centre's own ray
-// (the rectangle is on the pixel grid), as the composite, `particles` mode and the reference do,
-// instead of spreading or losing particles smaller than its texels.
-inline constexpr float kResolvedParticleTexels = 2.0f;
+// (the rectangle is on the pixel grid), as the composite, `particles` mode and the reference do.
+// Why 4: a particle is a Gaussian of deviation σ = R/3, and bilinear reconstruction from texels h
+// apart errs by up to h²/(8σ²) of its peak: 7% at 4 texels per radius, 28% at 2, and a particle
+// under one texel is lost or spread. (Measured on phase_away_from_sun, where g = −0.99 magnifies
+// any error in optical depth: 35% at 2, 7.9% at 4; cumulus at 1280×720 is unchanged.)
+inline constexpr float kResolvedParticleTexels = 4.0f;
 std::vector<glm::ivec2> tileSizes(const std::vector<BlockFootprint>& footprints, const glm::ivec2& viewport, float scale);
 
 }  // namespace nimbus::media
