@@ -2,8 +2,15 @@
 // make_block_scenes.py there (clouds of five shapes, thin to moderately thick, small to large
 // particles, a thin "wing" or plate through the cloud at a random angle, random sun, sometimes a
 // point light). Each must stay within the 8% rel-RMSE of the reference; the particles
-// mode's error is printed and recorded beside it.
-#include <set>
+// mode's error is printed and recorded beside it. Every scene in the folder is judged, or every
+// scene in $NIMBUS_BLOCK_SCENES when that is set (the list is made at test discovery, so run the
+// executable directly to judge scenes from another seed:
+//   sed 's/^BASE_SEED = .*/BASE_SEED = 9100/' make_block_scenes.py, written to another folder, then
+//   NIMBUS_BLOCK_SCENES=/tmp/s9100 build/<dir>/bin/nimbus_blocks_scene_tests --gtest_filter='*Unseen*').
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "../render_fixture.h"
 #include "blocks_scene_fixture.h"
@@ -11,7 +18,11 @@
 namespace nimbus::test {
 namespace {
 
-const std::filesystem::path kSceneDir = std::filesystem::path(NIMBUS_TEST_DATA_DIR) / "block_scenes";
+std::filesystem::path sceneDir() {
+    const char* override = std::getenv("NIMBUS_BLOCK_SCENES");
+    if (override != nullptr && *override != '\0') return override;
+    return std::filesystem::path(NIMBUS_TEST_DATA_DIR) / "block_scenes";
+}
 constexpr int kWidth = 256, kHeight = 144;
 constexpr double kMaxRelRmse = 0.08;
 
@@ -25,20 +36,26 @@ constexpr double kMaxRelRmse = 0.08;
 // pixel; its light is now integrated over each block's segment with the density of the block's
 // own particles near the lamp (block_lighting.glsl). 04 was also 11% in both modes: its lamp
 // sits 3 cm under the plate, and a mesh shadow softened over R/3 let it light the medium above.
-const char* const kScenes[] = {"block_scene_00", "block_scene_01", "block_scene_02", "block_scene_03", "block_scene_04",
-                               "block_scene_05", "block_scene_06", "block_scene_07", "block_scene_08", "block_scene_09"};
+std::vector<std::string> sceneNames() {
+    std::vector<std::string> names;
+    if (!std::filesystem::is_directory(sceneDir())) return names;
+    for (const auto& entry : std::filesystem::directory_iterator(sceneDir()))
+        if (entry.path().extension() == ".gltf") names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
 
-class UnseenBlockScenesTest : public GlSceneTest, public ::testing::WithParamInterface<const char*> {};
+class UnseenBlockScenesTest : public GlSceneTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
-    const std::filesystem::path scene = kSceneDir / (std::string(GetParam()) + ".gltf");
+    const std::filesystem::path scene = sceneDir() / (GetParam() + ".gltf");
     const assets::RgbImage reference = renderReference(scene, kWidth, kHeight);
     const assets::RgbImage blocks = renderRealtime(scene, kWidth, kHeight, {"mode=blocks"});
     const assets::RgbImage particles = renderRealtime(scene, kWidth, kHeight, {});
     const double error = relRmse(blocks, reference), particlesError = relRmse(particles, reference);
     RecordProperty("blocks_rel_rmse", std::to_string(error));
     RecordProperty("particles_rel_rmse", std::to_string(particlesError));
-    std::printf("%s: blocks %.4f, particles %.4f\n", GetParam(), error, particlesError);
+    std::printf("%s: blocks %.4f, particles %.4f\n", GetParam().c_str(), error, particlesError);
     EXPECT_EQ(media::reference::compareImages(blocks, reference).nonfinite, 0u);
     EXPECT_LE(error, kMaxRelRmse);
 }
@@ -55,34 +72,28 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
 // not met everywhere: on scenes from the generator's seeds 9100 and 9200 (not committed) it held
 // on 16 of 20 (failing 9100/02 3.13% vs 2.79%, 9100/04 7.7% vs 6.1%, 9100/05 2.46% vs 1.66%,
 // 9200/04 11.7% vs 10.5%).
-class UnseenSeamBandTest : public GlSceneTest, public ::testing::WithParamInterface<const char*> {};
+class UnseenSeamBandTest : public GlSceneTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(UnseenSeamBandTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
-    const std::filesystem::path scene = kSceneDir / (std::string(GetParam()) + ".gltf");
+    const std::filesystem::path scene = sceneDir() / (GetParam() + ".gltf");
     const assets::RgbImage reference = renderReference(scene, kWidth, kHeight);
     std::size_t seamPixels = 0;
     const std::vector<std::size_t> band = seamBand(scene, kWidth, kHeight, "wing", 2, &seamPixels);
     ASSERT_GT(seamPixels, 100u) << "the thin mesh must cut the cloud in this view";
     const double blocks = relRmseOver(renderRealtime(scene, kWidth, kHeight, {"mode=blocks"}), reference, band);
     const double billboards = relRmseOver(renderRealtime(scene, kWidth, kHeight, {"soft_particles=off"}), reference, band);
-    std::printf("%s: seam band (%zu px) blocks %.4f, particles soft_particles=off %.4f\n", GetParam(), band.size(), blocks, billboards);
+    std::printf("%s: seam band (%zu px) blocks %.4f, particles soft_particles=off %.4f\n", GetParam().c_str(), band.size(), blocks, billboards);
     EXPECT_LT(blocks, billboards);
 }
 
-std::string sceneName(const ::testing::TestParamInfo<const char*>& scene) { return scene.param; }
+std::string sceneName(const ::testing::TestParamInfo<std::string>& scene) { return scene.param; }
 
-INSTANTIATE_TEST_SUITE_P(Generated, UnseenBlockScenesTest, ::testing::ValuesIn(kScenes), sceneName);
-INSTANTIATE_TEST_SUITE_P(Generated, UnseenSeamBandTest, ::testing::ValuesIn(kScenes), sceneName);
+INSTANTIATE_TEST_SUITE_P(Generated, UnseenBlockScenesTest, ::testing::ValuesIn(sceneNames()), sceneName);
+INSTANTIATE_TEST_SUITE_P(Generated, UnseenSeamBandTest, ::testing::ValuesIn(sceneNames()), sceneName);
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(UnseenBlockScenesTest);  // an empty folder fails AreThere instead
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(UnseenSeamBandTest);
 
-TEST(UnseenBlockScenes, EveryGeneratedSceneIsJudged) {
-    // A scene added by the generator must be listed above, never skipped silently.
-    std::set<std::string> files, listed;
-    for (const auto& entry : std::filesystem::directory_iterator(kSceneDir))
-        if (entry.path().extension() == ".gltf") files.insert(entry.path().stem().string());
-    for (const char* name : kScenes) listed.insert(name);
-    EXPECT_EQ(files, listed);
-    EXPECT_GE(files.size(), 8u);
-}
+TEST(UnseenBlockScenes, AreThere) { EXPECT_GE(sceneNames().size(), 8u) << "no scenes in " << sceneDir(); }
 
 }  // namespace
 }  // namespace nimbus::test
