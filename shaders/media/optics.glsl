@@ -13,6 +13,17 @@ float erfApprox(float x) {
     return x < 0.0 ? -y : y;
 }
 
+// φ(α) / (1 − Φ(α)) of the standard normal (the mean of its part beyond α), from erfApprox's
+// polynomial: its exp(−α²/2) cancels, so it stays exact far into the tail.
+float inverseMillsRatio(float alpha) {
+    float a = abs(alpha) * 0.70710678;
+    float t = 1.0 / (1.0 + 0.3275911 * a);
+    float poly = ((((1.061405429 * t - 1.453152027) * t + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t;
+    if (alpha >= 0.0) return 0.79788456 / poly;  // √(2/π) / erfc-polynomial
+    float gauss = exp(-a * a);
+    return 0.79788456 * gauss / (2.0 - poly * gauss);
+}
+
 // ∫ exp(−(sk·u)²) du over [lo, hi]. A difference of two erf values cancels when the segment is
 // short (a grazing chord, a thin slice), and the float erf's absolute error then dominates; there
 // the integrand is smooth enough for 3-point Gauss–Legendre (relative error < 1e-7 for sk·Δ < 0.5).

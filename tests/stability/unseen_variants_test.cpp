@@ -41,12 +41,6 @@ const std::map<std::string, std::string> kBeyondBound = {
      "as for particles: the phase peak is the image (mean 5e-6). 528% since a block is shaded at two points "
      "(34% with one): the four peak pixels (0.006-0.009) are off by up to 30%, where the ground through the "
      "particle's centre splits the light along rays that run almost along the sun's direction"},
-    {"variant_05_normal_tau30_spot_inside_gp0_50_n1_far_inside_through/blocks",
-     "spot light inside one particle of τ 30: 44% (665% before the lamp's light was integrated over each block's "
-     "segment with its listed particles; 88% before the light slices stopped putting mass behind the lamp). "
-     "The block light slices spread a block's τ by a Gaussian of its depth moments, cut at the lamp: for a "
-     "particle centred near the lamp that puts a third of the true density at the lamp, so its light reaches "
-     "too far in (5% too bright where lit, more at the beam's end)"},
 };
 
 std::vector<std::string> variantScenes() {
