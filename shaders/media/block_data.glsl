@@ -3,14 +3,16 @@ struct BlockTile {
     vec4 rect;          // the block's rectangle in the view's NDC: xy min, zw max
     vec4 atlas;         // its tile in the atlas: x, y, width, height in texels (width 0: not drawn)
     vec4 centreRadius;  // xyz origin-relative centre, w mean particle radius
-    vec4 instance;      // x: ray-distance offset of the tile's depths (an instanced prototype), else 0
+    vec4 instance;      // x: ray-distance offset of the tile's depths (an instanced prototype), else 0;
+                        // y: 1 when the tile has one texel per view pixel, on the pixel grid
 };
 
 layout(std430, binding = 6) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)
 layout(std430, binding = 7) readonly buffer BlockTiles { BlockTile blockTiles[]; };
 
 // How far beyond a particle's silhouette, in tile texels, its impostor quad reaches: more than the
-// √2 texels from a pixel centre to the farthest texel of its bilinear read.
+// √2 texels from a pixel centre to the farthest texel of its bilinear read. A tile on the pixel
+// grid needs none: each pixel reads its own texel.
 const float kEdgeBand = 1.5;
 
 // Where a view NDC position falls in a tile, in atlas texels.
@@ -36,12 +38,22 @@ struct ImpostorSample {
     vec4 sums3;  // camera impostors: τ·mean, τ·(variance + mean²) of the depth along the ray
 };
 
-// The four texels and weights of a bilinear read at `texel`, kept inside the tile.
+// The four texels and weights of a bilinear read at `texel`, kept inside the tile. A tile on the
+// pixel grid is read at the pixel's own texel alone (float error in `texel` must not bring in a
+// neighbour, whose edge distance could flip the silhouette test).
 void tileBilinear(BlockTile tile, vec2 texel, out ivec2 q[4], out float w[4]) {
     vec2 p = clamp(texel, tile.atlas.xy + 0.5, tile.atlas.xy + tile.atlas.zw - 0.5) - 0.5;
+    ivec2 maxTexel = ivec2(tile.atlas.xy + tile.atlas.zw) - 1;
+    if (tile.instance.y > 0.5) {
+        ivec2 own = min(ivec2(floor(p + 0.5)), maxTexel);
+        for (int j = 0; j < 4; ++j) {
+            q[j] = own;
+            w[j] = j == 0 ? 1.0 : 0.0;
+        }
+        return;
+    }
     ivec2 base = ivec2(floor(p));
     vec2 f = p - vec2(base);
-    ivec2 maxTexel = ivec2(tile.atlas.xy + tile.atlas.zw) - 1;
     for (int j = 0; j < 4; ++j) {
         q[j] = min(base + ivec2(j & 1, j >> 1), maxTexel);
         w[j] = ((j & 1) == 1 ? f.x : 1.0 - f.x) * ((j >> 1) == 1 ? f.y : 1.0 - f.y);
@@ -61,8 +73,9 @@ ImpostorSample readImpostor(sampler2D depths, sampler2D sums1, sampler2D sums2, 
     ImpostorSample s = ImpostorSample(0.0, 0.0, 0.0, vec4(0.0), vec4(0.0), vec4(0.0));
     float depthWeight = 0.0, edge = 0.0;
     for (int j = 0; j < 4; ++j) {
+        if (w[j] == 0.0) continue;
         vec4 d = texelFetch(depths, q[j], 0);
-        edge += w[j] * d.b;
+        edge += w[j] * min(d.b, 1.0);  // unwritten: +3e38, which a weight of 1e-7 must not turn into 3e31
         s.tau += w[j] * d.a;
         if (d.a > 0.0) {
             s.front += w[j] * d.r;

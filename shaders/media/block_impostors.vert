@@ -50,7 +50,7 @@ void main() {
     }
     // kEdgeBand texels more on every side: texels just outside the particle get its edge distance
     // (block_impostors.frag), so every texel of a covered pixel's bilinear read has one.
-    ndc += corner * kEdgeBand * (tile.rect.zw - tile.rect.xy) / tile.atlas.zw;
+    if (tile.instance.y < 0.5) ndc += corner * kEdgeBand * (tile.rect.zw - tile.rect.xy) / tile.atlas.zw;
     vec2 texel = tileTexel(tile, ndc);
     vec2 local = (texel - tile.atlas.xy) / tile.atlas.zw;
     gl_ClipDistance[0] = local.x;

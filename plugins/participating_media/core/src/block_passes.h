@@ -16,7 +16,8 @@ struct alignas(16) GpuBlockTile {
     glm::vec4 rect;          // NDC rectangle in the view
     glm::vec4 atlas;         // tile in texels (width 0: not drawn)
     glm::vec4 centreRadius;  // origin-relative centre, mean particle radius
-    glm::vec4 instance;      // x: ray-distance offset added to the tile's depths (instanced prototype; else 0)
+    glm::vec4 instance;      // x: ray-distance offset added to the tile's depths (instanced prototype; else 0);
+                             // y: 1 when the tile has one texel per view pixel, on the pixel grid
 };
 
 // One view's impostor layout: where every block's tile is, and how big the atlas is.
