@@ -66,10 +66,10 @@ float blockLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float ta
 
 // segmentVisibility for a block's segment [front, back] of the ray: the lit fraction is the lit
 // share of the block's mass along the ray (BlockProfile).
-float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile, float t, float softness) {
+float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile, float t) {
     float soft, crossing;
     bool litInFront;
-    if (!meshShadowCrossing(i, origin, dir, profile.front, t, profile.back, softness, soft, crossing, litInFront)) return soft;
+    if (!meshShadowCrossing(i, origin, dir, profile.front, t, profile.back, soft, crossing, litInFront)) return soft;
     float before = profileMassBefore(profile, crossing);  // share of the mass in front of the crossing
     return clamp(litInFront ? before : 1.0 - before, 0.0, 1.0);
 }
@@ -112,7 +112,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float tau, 
             float t = piece.front + shadeAt;
             // Piece k's share: its own opacity, behind the k pieces in front of it.
             float weight = alpha > 0.0 ? pieceAlpha * exp(-float(k) * pieceTau) / alpha : 1.0 / float(BLOCK_SHADING_PIECES);
-            float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, piece, t, radius / 3.0) : 1.0;
+            float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, piece, t) : 1.0;
             scattered += weight * scatteredLight(i, origin + dir * t, dir, block, visibility);
         }
     }

@@ -65,7 +65,7 @@ TEST_F(StabilityTest, ParticlesCrossingNearPlaneWithinBound) {
 // 1e-6·max(back, 1) (else 1); particles.frag discards when u1 ≤ u0 before any division;
 // optics.glsl chordCentroid / chordShadingPoint return the middle for an empty or vanishing
 // segment; the reference integrates the medium to the mesh hit (reference_renderer.h).
-// Bound: 15%. Measured: main particles 0.87%, blocks 0.74%; grazing particles 1.3%, blocks 1.1%.
+// Bound: 15%. Measured: main particles 0.56%, blocks 0.48%; grazing particles 0.51%, blocks 0.27%.
 const HardCase kSurfaceThroughCentres{.name = "surface_through_centres",
                                       .scene = "surface_through_centres.gltf",
                                       .camera = "main",
@@ -163,7 +163,7 @@ TEST_F(StabilityTest, SubpixelParticlesWithinBound) {
 // covers the screen when the sphere reaches within 2·znear of the eye plane; the kernel is
 // evaluated in units of R (optics.glsl chordIntegral uses √k·u); impostor_atlas.cpp clips
 // rectangles to [−1, 1]² and clamps tiles to 256 texels, packAtlas shrinks to the 4096 limit.
-// Bound: 15%. Measured: particles 3.7%, blocks 3.5%.
+// Bound: 15%. Measured: particles 3.4%, blocks 3.3%.
 const HardCase kLarger{.name = "larger_than_screen", .scene = "larger_than_screen.gltf"};
 
 TEST_F(StabilityTest, ParticleLargerThanScreenStaysFinite) { expectFiniteAndClean(kLarger, runCase(context(), kLarger)); }

@@ -32,7 +32,7 @@ using media::MediaMode;
 //     chordShadingPoint (fraction → 1/τ, never 0/0) and erfInverse (argument clamped to
 //     ±0.9999999, no log(0)); lighting.glsl scatteredLight (exp(−τ) of the slice value, 0 not
 //     NaN); block_composite.frag divides the sums by τ only where τ > 0.
-// Bound: 15%. Measured: particles 3.1%, blocks 7.2%.
+// Bound: 15%. Measured: particles 3.1%, blocks 4.3%.
 const HardCase kOpticalDepth1e4{.name = "optical_depth_1e4", .scene = "optical_depth_1e4.gltf"};
 
 TEST_F(StabilityTest, OpticalDepth1e4StaysFinite) { expectFiniteAndClean(kOpticalDepth1e4, runCase(context(), kOpticalDepth1e4)); }
@@ -79,8 +79,8 @@ TEST_F(StabilityTest, OpticalDepth1eMinus5WithinBound) {
 // 0.99 of the axis); cameras come from the node's rotation, not a look-at (assets
 // resolveCamera); shaders/media/particles.vert picks the billboard helper axis by |axis.y|;
 // shaders/media/optics.glsl henyeyGreenstein forms its denominator from |a ∓ b|², not a float cos θ.
-// Bound: 15% each. Measured: parallel particles 0.35%, blocks 0.73%; antiparallel particles 2.2%,
-// blocks 13.1%; perpendicular particles 1.7%, blocks 2.5%.
+// Bound: 15% each. Measured: parallel particles 0.35%, blocks 0.51%; antiparallel particles 1.8%,
+// blocks 10.4%; perpendicular particles 1.7%, blocks 1.4%.
 const HardCase kLightParallel{.name = "light_parallel", .scene = "light_directions.gltf", .camera = "parallel"};
 const HardCase kLightAntiparallel{.name = "light_antiparallel", .scene = "light_directions.gltf", .camera = "antiparallel"};
 const HardCase kLightPerpendicular{.name = "light_perpendicular", .scene = "light_directions.gltf", .camera = "perpendicular"};
