@@ -186,7 +186,8 @@ TEST_F(StabilityTest, MillionParticlesMemoryIsBounded) {
             (void)renderMode(session, mode, kMillion.width, kMillion.height, "");
             frames.push_back(static_cast<double>(settledResidentBytes()) - warm);
             EXPECT_LE(frames.back(), kBand) << name << ", frame " << frame + 3;
-            trace += (frame > 0 ? " " : "") + std::to_string(static_cast<long>(std::lround(frames.back() / 1e6)));
+            if (frame > 0) trace += ' ';
+            trace += std::to_string(std::lround(frames.back() / 1e6));
         }
         auto median = [](std::vector<double> v) {
             std::sort(v.begin(), v.end());
