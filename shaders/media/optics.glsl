@@ -4,24 +4,26 @@
 const float KERNEL_FALLOFF = 4.5;
 const float HALF_SQRT_PI = 0.88622692545275801365;
 
-// erf with |error| < 1.5e-7 (Abramowitz & Stegun 7.1.26); GLSL has none.
+// erfc(a) = P(a)·exp(−a²) for a ≥ 0, |error| < 1.5e-7 (Abramowitz & Stegun 7.1.26): the polynomial P.
+float erfcPolynomial(float a) {
+    float t = 1.0 / (1.0 + 0.3275911 * a);
+    return ((((1.061405429 * t - 1.453152027) * t + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t;
+}
+
+// erf; GLSL has none.
 float erfApprox(float x) {
     float a = abs(x);
-    float t = 1.0 / (1.0 + 0.3275911 * a);
-    float poly = ((((1.061405429 * t - 1.453152027) * t + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t;
-    float y = 1.0 - poly * exp(-a * a);
+    float y = 1.0 - erfcPolynomial(a) * exp(-a * a);
     return x < 0.0 ? -y : y;
 }
 
-// φ(α) / (1 − Φ(α)) of the standard normal (the mean of its part beyond α), from erfApprox's
-// polynomial: its exp(−α²/2) cancels, so it stays exact far into the tail.
+// φ(α) / (1 − Φ(α)) of the standard normal (the mean of its part beyond α). For α ≥ 0 the
+// exp(−α²/2) of φ and of erfc cancel, so it stays exact far into the tail.
 float inverseMillsRatio(float alpha) {
     float a = abs(alpha) * 0.70710678;
-    float t = 1.0 / (1.0 + 0.3275911 * a);
-    float poly = ((((1.061405429 * t - 1.453152027) * t + 1.421413741) * t - 0.284496736) * t + 0.254829592) * t;
-    if (alpha >= 0.0) return 0.79788456 / poly;  // √(2/π) / erfc-polynomial
+    if (alpha >= 0.0) return 0.79788456 / erfcPolynomial(a);  // √(2/π) / P
     float gauss = exp(-a * a);
-    return 0.79788456 * gauss / (2.0 - poly * gauss);
+    return 0.79788456 * gauss / (2.0 - erfcPolynomial(a) * gauss);
 }
 
 // ∫ exp(−(sk·u)²) du over [lo, hi]. A difference of two erf values cancels when the segment is
@@ -118,12 +120,12 @@ float erfInverse(float x) {
 // layer. Its exact contribution is ∫₀^τ J(v) e^−v dv with v the optical depth from where the ray
 // enters it; for J linear in v that equals J(v̄)(1 − e^−τ) at v̄ = (1 − (1+τ)e^−τ)/(1 − e^−τ), the
 // e^−v-weighted mean (τ/2 for a thin particle, → 1 for a thick one: its front is what is seen).
-// Returns the u at which the kernel's cumulative optical depth from u0 reaches v̄.
 // v̄/τ: the share of the layer's optical depth in front of that point.
 float shadingDepthFraction(float tau) {
     return tau < 1e-3 ? 0.5 - tau / 12.0 : (1.0 - (1.0 + tau) * exp(-tau)) / (tau * oneMinusExpNeg(tau));
 }
 
+// Returns the u at which the kernel's cumulative optical depth from u0 reaches v̄.
 float chordShadingPoint(Chord c, float radius, float u0, float u1, float tau) {
     float lo = max(u0, -c.halfChord);
     float hi = min(u1, c.halfChord);

@@ -34,8 +34,7 @@ BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView&
                                         static_cast<float>(t.height));
         plan.tiles[b].centreRadius = glm::vec4(glm::vec3(partition.blocks[b].centre - origin), partition.blocks[b].meanParticleRadius);
         // Texel centres are pixel centres when the snapped rectangle's pixels are the tile's texels.
-        const glm::vec4 r = footprints[b].rect;
-        const glm::vec2 pixels = glm::round(glm::vec2(r.z - r.x, r.w - r.y) * 0.5f * glm::vec2(view.viewport));
+        const glm::vec2 pixels = glm::round(rectanglePixels(footprints[b].rect, view.viewport));
         const bool onPixelGrid = t.width > 0 && pixels == glm::vec2(static_cast<float>(t.width), static_cast<float>(t.height));
         plan.tiles[b].instance = glm::vec4(0.0f, onPixelGrid ? 1.0f : 0.0f, 0.0f, 0.0f);
     }

@@ -56,6 +56,10 @@ AtlasLayout packAtlas(const std::vector<glm::ivec2>& requested, int maxSize) {
     return layout;
 }
 
+glm::vec2 rectanglePixels(const glm::vec4& rect, const glm::ivec2& viewport) {
+    return glm::vec2(rect.z - rect.x, rect.w - rect.y) * 0.5f * glm::vec2(viewport);
+}
+
 std::vector<BlockFootprint> blockFootprints(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin) {
     std::vector<BlockFootprint> footprints;
     footprints.reserve(partition.blocks.size());
@@ -106,8 +110,7 @@ std::vector<glm::ivec2> tileSizes(const std::vector<BlockFootprint>& footprints,
         // A tile on the pixel grid keeps one texel per pixel however small; others get kMinTile.
         const bool perPixel = f.particlePixels * scale < kResolvedParticleTexels && scale <= 1.0f;
         const float density = perPixel ? 1.0f : scale;
-        const glm::vec2 pixels = glm::vec2(r.z - r.x, r.w - r.y) * 0.5f * glm::vec2(viewport);
-        const glm::ivec2 texels(glm::ceil(pixels * density - 1e-3f));  // a snapped rectangle's float pixels may be n + ε
+        const glm::ivec2 texels(glm::ceil(rectanglePixels(r, viewport) * density - 1e-3f));  // a snapped rectangle's float pixels may be n + ε
         sizes.emplace_back(glm::clamp(texels, glm::ivec2(perPixel ? 1 : kMinTile), glm::ivec2(kMaxTile)));
     }
     return sizes;

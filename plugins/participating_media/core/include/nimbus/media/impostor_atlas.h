@@ -40,6 +40,9 @@ struct BlockFootprint {
     float particlePixels = 0.0f;   // the block's mean particle radius in viewport pixels, at the block's centre
 };
 
+// How many viewport pixels a footprint's rectangle spans per axis (whole numbers, up to float error).
+glm::vec2 rectanglePixels(const glm::vec4& rect, const glm::ivec2& viewport);
+
 // Each block's footprint; a zero-area rectangle when the block is off-view. A block that reaches
 // behind the near plane covers the whole view.
 std::vector<BlockFootprint> blockFootprints(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin);
