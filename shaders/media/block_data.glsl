@@ -4,7 +4,8 @@ struct BlockTile {
     vec4 atlas;         // its tile in the atlas: x, y, width, height in texels (width 0: not drawn)
     vec4 centreRadius;  // xyz origin-relative centre, w mean particle radius
     vec4 instance;      // x: ray-distance offset of the tile's depths (an instanced prototype), else 0;
-                        // y: 1 when the tile has one texel per view pixel, on the pixel grid
+                        // y: 1 when the tile has one texel per view pixel, on the pixel grid;
+                        // z, w: the block's first item in impostorItems and its item count (0: none listed)
 };
 
 layout(std430, binding = 6) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)

@@ -36,7 +36,12 @@ BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView&
         // Texel centres are pixel centres when the snapped rectangle's pixels are the tile's texels.
         const glm::vec2 pixels = glm::round(rectanglePixels(footprints[b].rect, view.viewport));
         const bool onPixelGrid = t.width > 0 && pixels == glm::vec2(static_cast<float>(t.width), static_cast<float>(t.height));
-        plan.tiles[b].instance = glm::vec4(0.0f, onPixelGrid ? 1.0f : 0.0f, 0.0f, 0.0f);
+        // Items are uploaded block by block in partition order (uploadItems), so a block's items
+        // are its slice of `order`. Floats hold the indices exactly up to 2^24; beyond, no list.
+        const Block& block = partition.blocks[b];
+        const bool listed = std::uint64_t{block.first} + block.count <= (std::uint64_t{1} << 24);
+        plan.tiles[b].instance = glm::vec4(0.0f, onPixelGrid ? 1.0f : 0.0f, listed ? static_cast<float>(block.first) : 0.0f,
+                                           listed ? static_cast<float>(block.count) : 0.0f);
     }
     return plan;
 }

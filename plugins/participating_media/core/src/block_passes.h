@@ -17,7 +17,9 @@ struct alignas(16) GpuBlockTile {
     glm::vec4 atlas;         // tile in texels (width 0: not drawn)
     glm::vec4 centreRadius;  // origin-relative centre, mean particle radius
     glm::vec4 instance;      // x: ray-distance offset added to the tile's depths (instanced prototype; else 0);
-                             // y: 1 when the tile has one texel per view pixel, on the pixel grid
+                             // y: 1 when the tile has one texel per view pixel, on the pixel grid;
+                             // z, w: the block's first impostor item and item count (w 0: an instance,
+                             // whose particles are not in the item list)
 };
 
 // One view's impostor layout: where every block's tile is, and how big the atlas is.
