@@ -16,6 +16,7 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
     const glm::dmat4 viewMatrix(view.view);
     const glm::dmat4 projection = glm::dmat4(view.viewProjection) * glm::inverse(viewMatrix);
     double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest, radiusSum = 0.0;
+    double densest = 0.0;  // max over particles of √τ_p / R_p (τ_p: its peak column)
     // Peak column of one particle through its centre: σ ∫ e^{−k u²} du over the chord ≈ 0.8355·σR.
     const double columnPerSigmaRadius = std::sqrt(kPi / kKernelFalloff) * std::erf(std::sqrt(kKernelFalloff));
     for (std::size_t i = 0; i < particles.size(); ++i) {
@@ -25,6 +26,7 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
         nearest = std::min(nearest, depth - r);
         farthest = std::max(farthest, depth + r);
         radiusSum += r;
+        if (r > 0.0) densest = std::max(densest, std::sqrt(columnPerSigmaRadius * particles.sigma[i] * r) / r);
         const glm::dvec4 clip = projection * v;
         if (clip.w <= 0.0) continue;
         const glm::dvec2 uv = (glm::dvec2(clip) / clip.w) * 0.5 + 0.5;
@@ -38,6 +40,11 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
     e.meanRadius = radiusSum / static_cast<double>(particles.size());
     e.columnDepth = *std::max_element(column.begin(), column.end());
     double wanted = std::max(e.meanRadius > 0.0 ? e.depthExtent / e.meanRadius : 0.0, 2.0 * e.columnDepth);
+    // Linear interpolation of one particle's τ_p·Φ(x/s) (s = R/3) across a spacing h errs by up to
+    // h²/8 · τ_p·φ(1)/s² ≈ 0.27·τ_p·(h/R)². Keeping that under 0.02 (2% in transmittance) needs
+    // h ≤ 0.27·R/√τ_p: one slice per radius left a particle of τ_p ≈ 1 with g = −0.99, whose
+    // backscatter peak was the image, 3% dark (31% rel-RMSE at 4 slices, 7.9% at 8).
+    wanted = std::max(wanted, e.depthExtent * densest / 0.27);
     // A point or spot light among the particles (some reach behind its near plane): the medium
     // nearest the lamp, where 1/d² weights its transmittance most, is seen through the first slices,
     // and linear interpolation across a slice one radius deep misses how τ grows there (a dense cloud

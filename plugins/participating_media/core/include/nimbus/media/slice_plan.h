@@ -3,11 +3,12 @@
 //
 // Slices hold optical depth at K planes across the medium's depth range from the light; in between,
 // τ is interpolated linearly. Two things make that interpolation wrong: a slice spacing larger than
-// the particles (τ rises over one particle's diameter as an erf curve), and a large optical depth
-// per slice (the error in τ becomes a large error in e^−τ). So
-//     K = clamp(roundUpTo4(max(depth extent / mean radius, 2 · τ_column)), 4, 32)
-// where τ_column is the largest optical depth along one light ray, estimated on a 32×32 grid
-// across the light's view of the medium.
+// the particles (τ rises over one particle's diameter as an erf curve, the more steeply the denser
+// the particle), and a large optical depth per slice (the error in τ becomes a large error in e^−τ). So
+//     K = clamp(roundUpTo4(max(depth extent / mean radius, depth extent · max_p √τ_p / (0.27 R_p),
+//                              2 · τ_column)), 4, 32)
+// where τ_p is one particle's peak optical depth and τ_column the largest optical depth along one
+// light ray, estimated on a 32×32 grid across the light's view of the medium.
 #include "nimbus/media/particle_set.h"
 #include "nimbus/render/light_views.h"
 
