@@ -235,6 +235,27 @@ TEST(ImpostorAtlas, BlocksOfUnresolvedParticlesGetOneTexelPerPixel) {
     EXPECT_EQ(tileSizes(small, viewport, 2.0f).front(), glm::ivec2(256, 90));  // finer than a pixel stays so
 }
 
+TEST(ImpostorAtlas, BlocksOfAtMostOneLayerOfParticlesGetOneTexelPerPixel) {
+    const glm::ivec2 viewport(320, 180);
+    const glm::vec4 rect(-0.5f, -0.25f, 0.5f, 0.25f);  // 160×45 pixels
+    EXPECT_EQ(tileSizes({{rect, 20.0f, 0.8f}}, viewport, 0.5f).front(), glm::ivec2(160, 45));
+    EXPECT_EQ(tileSizes({{rect, 20.0f, 1.0f}}, viewport, 0.5f).front(), glm::ivec2(160, 45));
+    EXPECT_EQ(tileSizes({{rect, 20.0f, 1.2f}}, viewport, 0.5f).front(), glm::ivec2(80, 23));
+}
+
+TEST(ImpostorAtlas, OverdrawCountsTheParticleDiscsOverTheRectangle) {
+    // One particle alone: its disc covers less than its bounding square; a dense blob sums many.
+    const render::View v = render::makeView(test::lookAtCamera(glm::dvec3(0.0, 0.0, 30.0), glm::dvec3(0.0)), 320, 180);
+    ParticleSet one;
+    one.push(glm::dvec3(0.0), 2.0f, 1.0f, Medium{});
+    const auto lone = blockFootprints(partitionIntoBlocks(one, 1), cameraView(v), v.origin);
+    EXPECT_GT(lone.front().overdraw, 0.3f);
+    EXPECT_LE(lone.front().overdraw, 3.14159265f / 4.0f);
+    const ParticleSet blob = test::blobCloud(2000, 5, glm::dvec3(0.0));
+    const auto dense = blockFootprints(partitionIntoBlocks(blob, 1), cameraView(v), v.origin);
+    EXPECT_GT(dense.front().overdraw, 2.0f);
+}
+
 TEST(ImpostorAtlas, FootprintsLieOnThePixelGridAndMeasureTheParticles) {
     const ParticleSet set = test::blobCloud(500, 5);
     const BlockPartition p = partitionIntoBlocks(set, 0);

@@ -88,6 +88,9 @@ std::vector<BlockFootprint> blockFootprints(const BlockPartition& partition, con
                 lo = glm::min(lo, ndc);
                 hi = glm::max(hi, ndc);
             }
+            const glm::dvec2 pixels = (hi - lo) * 0.5 * viewport;
+            const double discs = b.count * 3.14159265358979 * footprint.particlePixels * footprint.particlePixels;
+            if (pixels.x > 0.0 && pixels.y > 0.0) footprint.overdraw = static_cast<float>(discs / (pixels.x * pixels.y));
         }
         // Out to whole pixels, so a tile of one texel per pixel has its texel centres on pixel centres.
         lo = glm::floor((glm::clamp(lo, -1.0, 1.0) * 0.5 + 0.5) * viewport) / viewport * 2.0 - 1.0;
@@ -108,7 +111,7 @@ std::vector<glm::ivec2> tileSizes(const std::vector<BlockFootprint>& footprints,
             continue;
         }
         // A tile on the pixel grid keeps one texel per pixel however small; others get kMinTile.
-        const bool perPixel = f.particlePixels * scale < kResolvedParticleTexels && scale <= 1.0f;
+        const bool perPixel = scale <= 1.0f && (f.particlePixels * scale < kResolvedParticleTexels || f.overdraw <= kPerPixelOverdraw);
         const float density = perPixel ? 1.0f : scale;
         const glm::ivec2 texels(glm::ceil(rectanglePixels(r, viewport) * density - 1e-3f));  // a snapped rectangle's float pixels may be n + ε
         sizes.emplace_back(glm::clamp(texels, glm::ivec2(perPixel ? 1 : kMinTile), glm::ivec2(kMaxTile)));
