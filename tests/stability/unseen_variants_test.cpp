@@ -31,17 +31,7 @@ namespace {
 using media::MediaMode;
 
 // "<variant stem>/<mode>" → why it is beyond 15% today (the report's finding).
-const std::map<std::string, std::string> kBeyondBound = {
-    {"variant_04_normal_tau1em05_antiparallel_gp0_99_n1_through/particles",
-     "one particle of τ 1e-5 centred on the ground, seen from below looking into the sun, g = 0.99, on black: "
-     "the image is the phase peak (max 0.0078, 1600× the image mean), its pixels are off by up to 1.7% in "
-     "rings (where the lit half of the kernel ends at the ground's shadow), and rel-RMSE, which divides by "
-     "the mean, reads 37%"},
-    {"variant_04_normal_tau1em05_antiparallel_gp0_99_n1_through/blocks",
-     "as for particles: the phase peak is the image (mean 5e-6). 27% (528% while a ray that never crossed the "
-     "ground's shadow boundary was lit by the taps' depth-soft average): its peak pixels, where the ground "
-     "through the particle's centre splits the light along rays that run almost along the sun's direction"},
-};
+const std::map<std::string, std::string> kBeyondBound = {};
 
 std::vector<std::string> variantScenes() {
     const char* override = std::getenv("NIMBUS_STABILITY_SCENES");
