@@ -38,6 +38,11 @@ float lampListWeight(LampList list, int light, vec3 x) {
 // (apply what lies in front). Per point, not once per layer: the optical depth changes across a
 // lamp's peak, and e^x averaged is not e^(x averaged). Exact for the listed neighbours where their
 // list is complete, within `reach` of the lamp (lampListWeight).
+// Capped: the factor undoes what the layers drawn after this one take away in the blend, and past
+// e^50 their transmittance (at most e^−50) leaves nothing a float can give back. Uncapped, the
+// e^τ of a τ = 1e4 neighbour was inf, and the blend's 0 · inf made NaN pixels (a spot inside dense
+// particles: tests/stability lamp_behind_opaque_particle).
+const float MAX_LAMP_LOG_FACTOR = 50.0;
 void lampOrderCorrection(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], LayerOrder layer,
                          out float logFactor[LAMP_NODES]) {
     for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] = 0.0;
@@ -60,7 +65,7 @@ void lampOrderCorrection(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], 
             logFactor[j] += drawnAfter ? sigma * chordIntegral(c, pr.w, split, u1) : -sigma * chordIntegral(c, pr.w, u0, split);
         }
     }
-    for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] *= lampListWeight(list, light, origin + dir * t[j]);
+    for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] = min(logFactor[j] * lampListWeight(list, light, origin + dir * t[j]), MAX_LAMP_LOG_FACTOR);
 }
 
 // Where the layer's own listed particles lie along the ray (their chords from the eye to

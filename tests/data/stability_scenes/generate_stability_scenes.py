@@ -288,6 +288,16 @@ def larger_than_screen():
     return b
 
 
+def spot_in_opaque_cloud():
+    """Unseen variant 2 of seed 8: 40 particles of 60–120 m and optical depth 1e4 around a spot
+    light, g = 0.99. A lamp inside the medium lists its neighbours, and the correction of their
+    compositing order was e^τ of a τ = 1e4 particle: inf, then NaN pixels in both modes."""
+    rng = random.Random(8)
+    for index in range(3):
+        _, b = unseen_variant(rng, index)
+    return b
+
+
 HARD_CASES = {
     "optical_depth_1e4": optical_depth_1e4,
     "optical_depth_1e-5": optical_depth_1e_5,
@@ -296,6 +306,7 @@ HARD_CASES = {
     "light_directions": light_directions,
     "spot_in_cloud": spot_in_cloud,
     "spot_near_ray": spot_near_ray,
+    "spot_in_opaque_cloud": spot_in_opaque_cloud,
     "far_from_origin": lambda: far_from_origin((1.0e5, 1.0e5, -1.0e5)),
     "far_from_origin_at_origin": lambda: far_from_origin((0.0, 0.0, 0.0)),
     "zero_particles": zero_particles,
