@@ -30,3 +30,17 @@ float mediumOpticalDepth(int lightIndex, vec3 p) {
     float hi = sliceValue(uv, v.params2.x, k);
     return mix(lo, hi, f);
 }
+
+// Whether light i's slices resolve a particle of this radius at p: slice planes and texels no
+// farther apart than it is wide. Where they do not, the particle's own optical depth is spread
+// over the texel and the slice interval, so how τ changes across the particle is not its own.
+bool slicesResolve(int lightIndex, vec3 p, float radius) {
+    if (frame.counts.y == 0) return true;
+    GpuLight L = lights[lightIndex];
+    int first = int(L.media.x);
+    if (first < 0) return true;
+    GpuLightView v = transmittanceViews[lightViewIndex(first, int(L.media.y), L.position.xyz, p)];
+    float spacing = (v.params.z - v.params.y) / max(v.params.w, 1.0);
+    float texel = v.params2.y * (v.params.x > 0.5 ? max(-(v.view * vec4(p, 1.0)).z, 0.0) : 1.0);
+    return spacing <= 2.0 * radius && texel <= radius;
+}

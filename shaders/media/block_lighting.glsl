@@ -113,7 +113,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float tau, 
             // Piece k's share: its own opacity, behind the k pieces in front of it.
             float weight = alpha > 0.0 ? pieceAlpha * exp(-float(k) * pieceTau) / alpha : 1.0 / float(BLOCK_SHADING_PIECES);
             float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, piece, t) : 1.0;
-            scattered += weight * scatteredLight(i, origin + dir * t, dir, block, visibility);
+            scattered += weight * scatteredLight(i, origin + dir * t, dir, block, visibility, -1.0);
         }
     }
     return block.albedoSigma.rgb * scattered + block.emissionG.rgb;

@@ -45,6 +45,6 @@ void main() {
     if (alpha <= 0.0) discard;
     float lo = max(u0, -chord.halfChord), hi = min(u1, chord.halfChord);
     LayerOrder layer = LayerOrder(vParticle.x, vParticle.y, tEnd, uSoftParticles != 0 ? 1e30 : tSurface);
-    vec3 source = segmentSource(origin, dir, chord, radius, lo, hi, chordShadingPoint(chord, radius, u0, u1, tau), particle, layer);
+    vec3 source = segmentSource(origin, dir, chord, radius, lo, hi, chordShadingPoint(chord, radius, u0, u1, tau), tau, particle, layer);
     outColor = vec4(source * alpha, alpha);
 }

@@ -298,6 +298,17 @@ def spot_in_opaque_cloud():
     return b
 
 
+def inside_towards_sun():
+    """Unseen variant 7 of seed 15: the camera inside one particle of optical depth 30, 1e5 m from
+    the origin, looking up into the sun; g = 0.99. Along the sun, the light's optical depth falls
+    as the view's grows, so every point of the ray sends the same light: one e^−τl at the layer's
+    shading point made the phase peak 3× too dark."""
+    rng = random.Random(15)
+    for index in range(8):
+        _, b = unseen_variant(rng, index)
+    return b
+
+
 HARD_CASES = {
     "optical_depth_1e4": optical_depth_1e4,
     "optical_depth_1e-5": optical_depth_1e_5,
@@ -307,6 +318,7 @@ HARD_CASES = {
     "spot_in_cloud": spot_in_cloud,
     "spot_near_ray": spot_near_ray,
     "spot_in_opaque_cloud": spot_in_opaque_cloud,
+    "inside_towards_sun": inside_towards_sun,
     "far_from_origin": lambda: far_from_origin((1.0e5, 1.0e5, -1.0e5)),
     "far_from_origin_at_origin": lambda: far_from_origin((0.0, 0.0, 0.0)),
     "zero_particles": zero_particles,
