@@ -78,6 +78,12 @@ QuadratureResult MediumQuadrature::integrate(const ViewRayMedium& medium, const 
         }
     }
 
+    // The floor scales with what the medium on this ray can send at most: its opacity times the
+    // scene's radiance. A fixed floor was 3% of a pixel behind τ 1e-5 particles, and the image
+    // changed by 1.2% when the tolerance was halved.
+    double rayOpacity = 0.0;
+    if (!clusters.empty()) rayOpacity = opacity(clusters.back().opticalDepthBefore + clusters.back().opticalDepth);
+    const double floor = settings.absoluteFloor * std::min(rayOpacity, 1.0);
     QuadratureResult result;
     for (;;) {
         // Sums in storage order: the same bits for the same ray, always.
@@ -89,7 +95,7 @@ QuadratureResult MediumQuadrature::integrate(const ViewRayMedium& medium, const 
         }
         result.value = value;
         result.errorEstimate = error;
-        const double allowed = std::max(settings.tolerance * maxAbs(value + offset), settings.absoluteFloor);
+        const double allowed = std::max(settings.tolerance * maxAbs(value + offset), floor);
         if (error <= allowed) break;
 
         std::size_t worst = intervals_.size();

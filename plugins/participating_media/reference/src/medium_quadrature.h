@@ -20,7 +20,7 @@ namespace nimbus::media::reference {
 
 struct QuadratureSettings {
     double tolerance = 1e-4;     // relative, against the pixel value (max over RGB)
-    double absoluteFloor = 0.0;  // radiance below which refining stops
+    double absoluteFloor = 0.0;  // radiance below which refining stops, for a ray of opacity 1 (scaled by the ray's)
     int maxDepth = 48;           // bisections of one interval
 };
 

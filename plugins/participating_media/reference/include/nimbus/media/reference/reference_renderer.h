@@ -25,7 +25,8 @@
 //   the ray, so a sparse tail that v compresses gets nodes of its own); the interval with the largest
 //   |K15 - G7| is bisected until Σ|K15 - G7| <= tolerance × the pixel
 //   value (max over RGB), or below an absolute floor of tolerance × 1e-3 × the scene's radiance scale
-//   (brightest of background, ambient, emission, light irradiance/π at the scene centre), or the
+//   (brightest of background, ambient, emission, light irradiance/π at the scene centre) × the ray's
+//   medium opacity (at most what the medium can send), or the
 //   depth bound (48 bisections) is reached (counted as an unconverged ray).
 // - Deterministic: each pixel depends only on the inputs (no shared accumulation), so the image has
 //   the same bits for any thread count.
