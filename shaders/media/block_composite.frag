@@ -69,8 +69,8 @@ void main() {
     // The share of the block's optical depth in front of the surface: exact from the block's own
     // particles where the surface lies among them, else from the depth profile the impostor's
     // moments give (block_lighting.glsl blockProfile), which also shapes the shading below.
-    vec2 moments = s.sums3.xy / s.tau;
-    BlockProfile profile = blockProfile(s.front, s.back, vec2(moments.x + tile.instance.x, moments.y + tile.instance.x * (2.0 * moments.x + tile.instance.x)));
+    float momentOrigin = frameOrthographic() ? dot(tile.centreRadius.xyz, frame.cameraForward.xyz) : length(tile.centreRadius.xyz);
+    BlockProfile profile = blockProfile(s.front, s.back, momentOrigin, s.sums3.xy / s.tau);
     float share = tSurface < s.back + reach ? listedMassBefore(tile, origin, dir, tSurface) : 1.0;
     if (share < 0.0) share = profileMassBefore(profile, tSurface);
     float tau = s.tau * share;

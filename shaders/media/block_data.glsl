@@ -11,6 +11,16 @@ struct BlockTile {
 layout(std430, binding = 6) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)
 layout(std430, binding = 7) readonly buffer BlockTiles { BlockTile blockTiles[]; };
 
+// The ray distance a tile's depth moments are taken about: its block centre's distance from the
+// view's eye, or its view depth (orthographic). About the view's eye, E[t²] − E[t]² lost the
+// variance to float rounding wherever a block lies far from the eye compared with its particles'
+// spread (5 m away, 2 mm particles: a third of it), and with it where a ground through the
+// particles cuts their mass. An instance of the prototype has its own centre, so the same moments
+// read about its own origin put it where it is.
+float tileMomentOrigin(BlockTile tile, mat4 view, bool perspective, vec3 eye) {
+    return perspective ? length(tile.centreRadius.xyz - eye) : -(view * vec4(tile.centreRadius.xyz, 1.0)).z;
+}
+
 // How far beyond a particle's silhouette, in tile texels, its impostor quad reaches: more than the
 // √2 texels from a pixel centre to the farthest texel of its bilinear read. A tile on the pixel
 // grid needs none: each pixel reads its own texel.

@@ -20,7 +20,7 @@ flat in int vBlock;
 layout(location = 0) out vec4 outDepths;
 layout(location = 1) out vec4 outSums1;
 layout(location = 2) out vec4 outSums2;
-layout(location = 3) out vec4 outMoments;  // τ·mean, τ·(variance + mean²) of the depth along the ray
+layout(location = 3) out vec4 outMoments;  // τ·mean, τ·(variance + mean²) of the depth along the ray, about tileMomentOrigin
 
 void main() {
     GpuParticle particle = particles[vParticle];
@@ -53,6 +53,6 @@ void main() {
     outSums1 = tau * vec4(0.0, particle.albedoSigma.rgb);  // x: free
     outSums2 = tau * vec4(particle.emissionG.rgb, particle.emissionG.w);
     vec2 moments = chordMoments(chord, radius, lo, chord.halfChord);
-    float mean = chord.tClosest + moments.x;
+    float mean = chord.tClosest + moments.x - tileMomentOrigin(tile, uView, uParams.x > 0.5, uEye);
     outMoments = tau * vec4(mean, moments.y + mean * mean, 0.0, 0.0);
 }

@@ -14,9 +14,10 @@ struct BlockProfile {
     float deviation;  // 0: uniform
 };
 
-BlockProfile blockProfile(float front, float back, vec2 moments) {
+// `moments`: the mean and second moment of ray distance − `origin` (block_data.glsl tileMomentOrigin).
+BlockProfile blockProfile(float front, float back, float origin, vec2 moments) {
     float deviation = sqrt(max(moments.y - moments.x * moments.x, 0.0));
-    return BlockProfile(front, back, moments.x, deviation > 1e-6 * max(abs(back), 1.0) ? deviation : 0.0);
+    return BlockProfile(front, back, origin + moments.x, deviation > 1e-6 * max(abs(back), 1.0) ? deviation : 0.0);
 }
 
 // Share of the profile's mass in front of ray distance t.

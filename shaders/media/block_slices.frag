@@ -53,9 +53,9 @@ void main() {
     // How the block's optical depth is spread along the light ray: a Gaussian with the mean and
     // variance of its particles' kernels (moments the impostor accumulates), which follows a dense
     // core far better than uniform density between the outermost spheres.
-    float mean = s.sums1.x / s.tau;
+    float mean = s.sums1.x / s.tau;  // about tileMomentOrigin, which puts an instance where it is
     float deviation = sqrt(max(s.sums1.y / s.tau - mean * mean, 0.0));
-    mean += tile.instance.x;  // an instanced prototype is shifted along the light (its spread is not)
+    mean += tileMomentOrigin(tile, uView, uParams.x > 0.5, uLightOrigin);
     if (uParams.x > 0.5 && deviation > 1e-6) {
         vec2 cut = normalCutAt(0.0, mean, deviation);
         mean = cut.x;
