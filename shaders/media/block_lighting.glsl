@@ -89,9 +89,8 @@ const int BLOCK_SHADING_PIECES = 2;
 // up to 95%).
 vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float tau, GpuParticle block, LayerOrder layer) {
     float t0 = profile.front, t1 = profile.back;
-    float pieceTau = tau / float(BLOCK_SHADING_PIECES), pieceLength = (t1 - t0) / float(BLOCK_SHADING_PIECES);
-    float pieceAlpha = oneMinusExpNeg(pieceTau), alpha = oneMinusExpNeg(tau);
-    float shadeAt = shadingDepthFraction(pieceTau) * pieceLength;  // uniform density: v̄ is that share of the length
+    float pieceLength = (t1 - t0) / float(BLOCK_SHADING_PIECES);
+    float alpha = oneMinusExpNeg(tau);
     vec3 scattered = frame.ambient.rgb;
     float radius = block.positionRadius.w;
     for (int i = 0; i < frame.counts.x; ++i) {
@@ -107,12 +106,17 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, float tau, 
         }
 #endif
         BlockProfile piece = profile;
+        float before = 0.0;  // the profile's share of the block's optical depth in front of piece k
         for (int k = 0; k < BLOCK_SHADING_PIECES; ++k) {
             piece.front = t0 + float(k) * pieceLength;
             piece.back = piece.front + pieceLength;
-            float t = piece.front + shadeAt;
-            // Piece k's share: its own opacity, behind the k pieces in front of it.
-            float weight = alpha > 0.0 ? pieceAlpha * exp(-float(k) * pieceTau) / alpha : 1.0 / float(BLOCK_SHADING_PIECES);
+            // Piece k's share: its own opacity, behind the pieces in front of it, by the profile's
+            // mass in it (equal shares put a dense core's light in its thin tails).
+            float after = k + 1 == BLOCK_SHADING_PIECES ? 1.0 : profileMassBefore(profile, piece.back);
+            float share = max(after - before, 0.0);
+            float t = piece.front + shadingDepthFraction(tau * share) * pieceLength;
+            float weight = alpha > 0.0 ? oneMinusExpNeg(tau * share) * exp(-tau * before) / alpha : share;
+            before = after;
             float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, piece, t) : 1.0;
             scattered += weight * scatteredLight(i, origin + dir * t, dir, block, visibility, -1.0);
         }
