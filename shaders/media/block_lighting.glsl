@@ -77,12 +77,13 @@ float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile,
 
 // A block is shaded at this many points along its visible segment: one point missed how the light
 // changes across a block of several particles (its own shadow, the mesh's): on cloud.gltf the seam
-// band erred 1.7% with one, 1.2% with two.
+// band erred 1.7% with one, 1.2% with two (equal weights). With the profile's mass as weights,
+// 0.76% with two, 1.16% with three and 1.26% with four.
 const int BLOCK_SHADING_PIECES = 2;
 
 // The source of a block's visible segment [front, back] of optical depth τ: directional lights and
-// distant lamps at BLOCK_SHADING_PIECES points, one per piece of equal length and optical depth
-// (uniform density), weighted by the share of the block's light each piece sends to the front,
+// distant lamps at BLOCK_SHADING_PIECES points, one per piece of equal length, each holding the
+// depth profile's share of τ and weighted by the share of the block's light it sends to the front,
 // with the mesh visibility taken over the piece; point and spot lights near the segment or whose
 // cone's edge crosses it are integrated over the whole of it (blockLocalLightSegment: 1/d² across
 // a block spans far more than across one particle, and one shading point missed a lamp's glow by
