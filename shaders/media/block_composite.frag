@@ -88,6 +88,7 @@ void main() {
     // only its kernels' tails, which lie within `reach` of it.
     profile.front = end > s.front ? s.front : end - reach;
     profile.back = end;
-    vec3 source = blockSegmentSource(origin, dir, profile, tau, block, layer);
+    vec2 tails = vec2(end > s.front ? reach : 0.0, end < s.back ? 0.0 : reach);  // none past a cut
+    vec3 source = blockSegmentSource(origin, dir, profile, tails, tau, block, layer);
     outColor = vec4(source * alpha, alpha);
 }
