@@ -64,8 +64,8 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
 // The seam criterion of cloud_blocks_test.cpp: in the band of pixels where the wing lies inside
 // the cloud, blocks err less than billboards without soft particles. Seam band rel_rmse, blocks
 // (2√N blocks) vs particles with soft_particles=off:
-//   00 0.32% vs 1.11%, 01 2.70% vs 3.06%, 02 3.80% vs 4.14%, 03 0.41% vs 0.87%, 04 9.49% vs 38.0%,
-//   05 1.66% vs 2.33%, 06 0.69% vs 0.93%, 07 3.84% vs 4.10%, 08 3.49% vs 3.03%, 09 1.34% vs 3.41%
+//   00 0.32% vs 1.11%, 01 2.68% vs 3.06%, 02 3.78% vs 4.14%, 03 0.41% vs 0.87%, 04 9.45% vs 38.0%,
+//   05 1.60% vs 2.33%, 06 0.68% vs 0.93%, 07 3.84% vs 4.10%, 08 3.20% vs 3.03%, 09 1.30% vs 3.41%
 // History: only 00 passed while a block was cut at the surface uniformly over [front, back] and
 // shaded at one point. With a depth profile from the impostor's moments, silhouettes cut at the
 // particles and a texel per pixel for small particles, 01 still failed (4.12% vs 4.03%): the
@@ -81,9 +81,10 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
 // 01, 05, 07 and 08. Blocks' two shading pieces had equal weights whatever the depth profile held
 // in each; weighted by the profile's mass (block_lighting.glsl blockSegmentSource) the band error
 // fell on nine of ten (01 3.93% → 2.70%, 05 3.36% → 1.66%, 07 6.83% → 3.84%, 08 4.40% → 3.49%;
-// cloud.gltf 1.18% → 0.76%). Fresh seeds 9100 and 9200: 17 of 20 pass.
+// cloud.gltf 1.18% → 0.76%); counting the kernels' tails past [front, back] took 08 to 3.20%.
+// Fresh seeds 9100 and 9200: 17 of 20 pass.
 const std::map<std::string, std::string> kSeamKnownFailing = {
-    {"block_scene_08", "blocks 3.49% vs billboards 3.03% in the seam band"},
+    {"block_scene_08", "blocks 3.20% vs billboards 3.03% in the seam band"},
 };
 
 std::vector<std::string> seamScenes(bool knownFailing) {
