@@ -95,7 +95,7 @@ TEST_F(StabilityTest, ParticlesDyingOutStayFinite) {
 // depth extent is one diameter; a back-to-front sort of one element; statistics divided by N − 1.
 // What prevents it: block_partition.cpp partitionIntoBlocks makes min(blocks, N) blocks;
 // slice_plan.cpp estimateSlices keeps depthFar > depthNear (+1e-6) and clamps K to [4, 32].
-// Bound: 15%. Measured: particles 0.60%, blocks 0.54%.
+// Bound: 15%. Measured: particles 0.17%, blocks 0.02%.
 const HardCase kOne{.name = "one_particle", .scene = "one_particle.gltf"};
 
 TEST_F(StabilityTest, OneParticleStaysFinite) {

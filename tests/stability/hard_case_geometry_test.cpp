@@ -24,7 +24,7 @@ using media::MediaMode;
 // block_impostors.frag likewise (lo = max(−h, −t_closest)); impostor_atlas.cpp blockFootprints
 // gives a block that reaches behind the near plane the whole view. Reference: camera_rays.h, the
 // medium is integrated from t = 0.
-// Bound: 15%. Measured: particles 0.22%, blocks 0.39%.
+// Bound: 15%. Measured: particles 0.18%, blocks 0.33%.
 const HardCase kCameraInside{.name = "camera_inside_cloud", .scene = "camera_inside_cloud.gltf", .camera = "inside"};
 
 TEST_F(StabilityTest, CameraInsideCloudStaysFinite) { expectFiniteAndClean(kCameraInside, runCase(context(), kCameraInside)); }
@@ -42,7 +42,7 @@ TEST_F(StabilityTest, CameraInsideCloudWithinBound) {
 // What prevents it: particles.vert covers the screen when −c.z − R ≤ 2·znear; the fragment shader
 // integrates the exact chord from the eye, independent of where the quad is; the reference clips
 // only meshes at znear (camera_rays.h meshNear) and the media pass does the same.
-// Bound: 15%. Measured: particles 0.35%, blocks 0.35%.
+// Bound: 15%. Measured: particles 0.23%, blocks 0.20%.
 const HardCase kNearPlane{.name = "near_plane", .scene = "camera_inside_cloud.gltf", .camera = "near_plane"};
 
 TEST_F(StabilityTest, ParticlesCrossingNearPlaneStayFinite) { expectFiniteAndClean(kNearPlane, runCase(context(), kNearPlane)); }
@@ -65,7 +65,7 @@ TEST_F(StabilityTest, ParticlesCrossingNearPlaneWithinBound) {
 // 1e-6·max(back, 1) (else 1); particles.frag discards when u1 ≤ u0 before any division;
 // optics.glsl chordCentroid / chordShadingPoint return the middle for an empty or vanishing
 // segment; the reference integrates the medium to the mesh hit (reference_renderer.h).
-// Bound: 15%. Measured: main particles 0.56%, blocks 0.48%; grazing particles 0.51%, blocks 0.27%.
+// Bound: 15%. Measured: main particles 0.12%, blocks 0.07%; grazing particles 0.25%, blocks 0.02%.
 const HardCase kSurfaceThroughCentres{.name = "surface_through_centres",
                                       .scene = "surface_through_centres.gltf",
                                       .camera = "main",
@@ -105,7 +105,7 @@ TEST_F(StabilityTest, SurfaceThroughCentresGrazingWithinBound) {
 // slice_plan.cpp estimateSlices); the reference is all double.
 // Asserted beyond the usual: the far scene's frames equal the at-origin scene's frames (same
 // relative geometry) within 1e-3 rel-RMSE in both modes, and so do the references.
-// Bound: 15%. Measured: particles 0.49%, blocks 0.51%; far vs at origin: 0 (bit-identical).
+// Bound: 15%. Measured: particles 0.47%, blocks 0.47%; far vs at origin: 0 (bit-identical).
 const HardCase kFar{.name = "far_from_origin", .scene = "far_from_origin.gltf"};
 const HardCase kNear{.name = "far_from_origin_at_origin", .scene = "far_from_origin_at_origin.gltf"};
 

@@ -32,7 +32,7 @@ using media::MediaMode;
 //     chordShadingPoint (fraction → 1/τ, never 0/0) and erfInverse (argument clamped to
 //     ±0.9999999, no log(0)); lighting.glsl scatteredLight (exp(−τ) of the slice value, 0 not
 //     NaN); block_composite.frag divides the sums by τ only where τ > 0.
-// Bound: 15%. Measured: particles 3.1%, blocks 4.3%.
+// Bound: 15%. Measured: particles 2.9%, blocks 4.1%.
 const HardCase kOpticalDepth1e4{.name = "optical_depth_1e4", .scene = "optical_depth_1e4.gltf"};
 
 TEST_F(StabilityTest, OpticalDepth1e4StaysFinite) { expectFiniteAndClean(kOpticalDepth1e4, runCase(context(), kOpticalDepth1e4)); }
@@ -54,7 +54,7 @@ TEST_F(StabilityTest, OpticalDepth1e4WithinBound) {
 // short intervals by Gauss–Legendre instead of subtracting erfs; shaders/common/math.glsl
 // oneMinusExpNeg switches to its Taylor series below 1e-3; the reference floor is relative to the
 // scene's radiance scale (reference_renderer.h), and its self-change is asserted.
-// Bound: 15%. Measured: particles 0.0002%, blocks 5.2% — blocks mode's error here is its impostor
+// Bound: 15%. Measured: particles 0.0002%, blocks 2.1% — blocks mode's error here is its impostor
 // resolution (impostor_scale 0.5 blurs silhouettes over ~2 px: 14% at 96×54, 0.85% there with
 // impostor_scale 2), not cancellation; it shows only because nothing but the medium is in the image.
 const HardCase kOpticalDepth1e5{.name = "optical_depth_1e-5", .scene = "optical_depth_1e-5.gltf"};
@@ -79,8 +79,12 @@ TEST_F(StabilityTest, OpticalDepth1eMinus5WithinBound) {
 // 0.99 of the axis); cameras come from the node's rotation, not a look-at (assets
 // resolveCamera); shaders/media/particles.vert picks the billboard helper axis by |axis.y|;
 // shaders/media/optics.glsl henyeyGreenstein forms its denominator from |a ∓ b|², not a float cos θ.
-// Bound: 15% each. Measured: parallel particles 0.35%, blocks 0.51%; antiparallel particles 1.8%,
-// blocks 10.4%; perpendicular particles 1.7%, blocks 1.4%.
+// Bound: 15% each. Measured: parallel particles 0.09%, blocks 0.24%; antiparallel particles 4.6%,
+// blocks 3.3%; perpendicular particles 0.96%, blocks 0.91%. Antiparallel particles were 1.5% while
+// each particle took the light's transmittance at one point: the other particles' mass along the
+// ray bends τl, which lighting.glsl layerLightTransmittance's one line in v does not follow (three
+// samples, piecewise linear, gave 3.6% here but worse everywhere else). Blocks were 10.6% before
+// their shading pieces were weighted by the depth profile's mass.
 const HardCase kLightParallel{.name = "light_parallel", .scene = "light_directions.gltf", .camera = "parallel"};
 const HardCase kLightAntiparallel{.name = "light_antiparallel", .scene = "light_directions.gltf", .camera = "antiparallel"};
 const HardCase kLightPerpendicular{.name = "light_perpendicular", .scene = "light_directions.gltf", .camera = "perpendicular"};
@@ -130,8 +134,8 @@ TEST_F(StabilityTest, LightPerpendicularToViewWithinBound) {
 // tan-substitution of one pixel's ray: 2.021 + 0.016 ambient against the reference's 2.037); where
 // rays pass within millimetres of the light the reference itself fails (reference_near_light_test).
 // Bound: 15%. Measured: particles 3.6% (9.0% with the light averaged over the kernel and applied
-// at one point per particle; 178% before 213e2c7 put the cone inside that average), blocks 3.2%
-// (110% while a block was lit at one point: the peak pixel (46, 21) at 96×54 read 0.016 against
+// at one point per particle; 178% before 213e2c7 put the cone inside that average), blocks 2.5%
+// (3.2% before their shading pieces were weighted by mass; 110% while a block was lit at one point: the peak pixel (46, 21) at 96×54 read 0.016 against
 // 2.04; block_lighting.glsl blockLocalLightSegment integrates the lamp over each block's segment
 // with the block's own particles listed around the lamp, within the largest block's radius).
 const HardCase kSpotInCloud{.name = "spot_in_cloud", .scene = "spot_in_cloud.gltf"};
@@ -176,7 +180,7 @@ TEST_F(StabilityTest, SpotLightAmongOpaqueParticlesBlocksWithinBound) {
 // What prevents it: shaders/media/lighting.glsl layerLightTransmittance integrates e^−τl over the
 // layer in closed form with τl linear in the view's optical depth (from the slices at the layer's
 // entry and shading point). Blocks shade two pieces per block and erred 8% before it.
-// Bound: 15%. Measured: particles 0.67%, blocks 8.1%.
+// Bound: 15%. Measured: particles 0.67%, blocks 4.3%.
 const HardCase kInsideTowardsSun{.name = "inside_towards_sun", .scene = "inside_towards_sun.gltf"};
 
 TEST_F(StabilityTest, InsideDenseParticleTowardsSunStaysFinite) {
@@ -203,8 +207,9 @@ TEST_F(StabilityTest, InsideDenseParticleTowardsSunBlocksWithinBound) {
 // there) and blur it inside: impostor texels carry an edge distance whose bilinear read cuts
 // optical depth to zero outside every particle (block_data.glsl readImpostor), and blocks of
 // particles under 4 texels in radius get one texel per pixel (impostor_atlas.cpp tileSizes).
-// Bound: 15%. Measured: towards_sun particles 0.53%, blocks 1.1%; away_from_sun particles 2.4%,
-// blocks 7.9% (35% with neither; 28% with the edge cut alone).
+// Bound: 15%. Measured: towards_sun particles 0.69%, blocks 0.44%; away_from_sun particles 1.2%,
+// blocks 1.7% (blocks 7.5% before their shading pieces were weighted by mass; 35% with neither the
+// edge cut nor the per-pixel tiles, 28% with the edge cut alone).
 const HardCase kPhaseTowardsSun{.name = "phase_towards_sun", .scene = "phase_extremes.gltf", .camera = "towards_sun"};
 const HardCase kPhaseAwayFromSun{.name = "phase_away_from_sun", .scene = "phase_extremes.gltf", .camera = "away_from_sun"};
 
