@@ -17,7 +17,7 @@ namespace nimbus::sandbox {
 namespace {
 
 // Every key a configuration may set; each is cleared before the next configuration.
-const char* const kSweptKeys[] = {"mode", "slices", "blocks", "impostor_scale", "instancing", "media_scale", "soft_particles"};
+const char* const kSweptKeys[] = {"mode", "slices", "blocks", "impostor_scale", "instancing", "media_scale", "soft_particles", "layer_light"};
 
 bool isMediaPass(const std::string& name) {
     return name == "light_slices" || name.rfind("media_", 0) == 0 || name.rfind("block_", 0) == 0;
@@ -39,6 +39,7 @@ std::vector<BenchConfig> standardSweep(std::size_t particles) {
     };
     add("particles", {{"mode", "particles"}});
     for (const char* slices : {"4", "8", "16", "32"}) add(std::string("particles slices=") + slices, {{"mode", "particles"}, {"slices", slices}});
+    add("particles layer_light=off", {{"mode", "particles"}, {"layer_light", "off"}});
     add("particles media_scale=0.5", {{"mode", "particles"}, {"media_scale", "0.5"}});
     add("particles media_scale=0.25", {{"mode", "particles"}, {"media_scale", "0.25"}});
     add("blocks", {{"mode", "blocks"}});

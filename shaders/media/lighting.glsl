@@ -93,12 +93,13 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
 // particle lit from the side is a half-space whose surface sends μ0/(μ0 + μ) of it. With τl linear
 // in v through its values at the entry and at v̄, the integral is closed-form and exact in both;
 // returns it over 1 − e^−τ, in place of e^−τl(v̄). Only where the slices resolve the particle
-// (slicesResolve): else the change of τl across it is the slices' spread of its own optical depth,
+// (mediumOpticalDepthPair): else the change of τl across it is the slices' spread of its own optical depth,
 // and the slope made a spot-lit particle of 8 mm 52% too bright (unseen seed 19, variant 02).
 float layerLightTransmittance(int i, vec3 entry, vec3 p, float vBar, float tau, float radius) {
-    float atP = mediumOpticalDepth(i, p);
-    if (!(vBar > 1e-4) || !(tau > 1e-4) || !slicesResolve(i, p, radius)) return exp(-atP);
-    float a = mediumOpticalDepth(i, entry);
+    if (!(vBar > 1e-4) || !(tau > 1e-4)) return exp(-mediumOpticalDepth(i, p));
+    vec3 depths = mediumOpticalDepthPair(i, p, entry, radius);
+    float atP = depths.x, a = depths.y;
+    if (depths.z < 0.5) return exp(-atP);
     float b = max((atP - a) / vBar, -a / tau);  // τl stays ≥ 0 across the layer
     float k = 1.0 + b, kT = k * tau;
     float integral;  // ∫₀^τ e^−(a + b v) e^−v dv
@@ -170,6 +171,9 @@ float segmentVisibility(int i, vec3 origin, vec3 dir, Chord c, float radius, flo
 // the lamp's closest approach lies inside it, near the particle, or a spot cone's edge crosses it.
 // Those are integrated over the segment (local_light_segment.glsl), their mesh shadow taken where
 // the integrand is centred, and near the lamp their attenuation by the other layers made exact.
+// `tau`: the segment's optical depth, for the light's transmittance integrated over it
+// (layerLightTransmittance) in the MEDIA_LAYER_LIGHT build; without it, that is taken at u
+// (particle_pass.cpp: llvmpipe runs both sides of a branch, so a switch must be a build).
 vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u, float tau,
                    GpuParticle particle, LayerOrder layer) {
     vec3 p = origin + dir * (c.tClosest + u);
@@ -198,7 +202,12 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
         }
 #endif
         float visibility = lights[i].spot.z >= 0.0 ? segmentVisibility(i, origin, dir, c, radius, lo, hi, u) : 1.0;
-        scattered += scatteredLight(i, p, dir, particle, visibility, layerLightTransmittance(i, entry, p, vBar, tau, radius));
+#ifdef MEDIA_LAYER_LIGHT
+        float transmittance = layerLightTransmittance(i, entry, p, vBar, tau, radius);
+#else
+        float transmittance = -1.0;  // at p
+#endif
+        scattered += scatteredLight(i, p, dir, particle, visibility, transmittance);
     }
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 }

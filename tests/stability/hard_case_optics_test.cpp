@@ -192,6 +192,13 @@ TEST_F(StabilityTest, InsideDenseParticleTowardsSunParticlesWithinBound) {
 TEST_F(StabilityTest, InsideDenseParticleTowardsSunBlocksWithinBound) {
     expectWithinBound(kInsideTowardsSun, runCase(context(), kInsideTowardsSun), MediaMode::Blocks, kDefaultErrorBound);
 }
+// layer_light=off takes the light at one point per particle again: what the integral fixes.
+TEST_F(StabilityTest, InsideDenseParticleTowardsSunNeedsTheLayerIntegral) {
+    HardCase onePoint = kInsideTowardsSun;
+    onePoint.name = "inside_towards_sun_layer_light_off";
+    onePoint.settings = {"layer_light=off"};
+    EXPECT_GT(runCase(context(), onePoint).particles.error.relRmse, 5.0 * runCase(context(), kInsideTowardsSun).particles.error.relRmse);
+}
 
 // ── g = ±0.99 ────────────────────────────────────────────────────────────────────────────────
 // Two clouds, g = +0.99 (left) and g = −0.99 (right), under a low sun; camera "towards_sun" looks

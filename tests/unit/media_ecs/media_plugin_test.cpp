@@ -81,7 +81,7 @@ TEST_F(MediaPluginTest, BuildRegistersComponentsSystemsAndResources) {
     EXPECT_TRUE(app.hasResource<MediaRendererState>());
     const auto& spawners = app.resource<scene::SceneSpawners>().list;
     EXPECT_EQ(std::count_if(spawners.begin(), spawners.end(), [](const auto& s) { return s.first == "media"; }), 1);
-    for (const char* key : {"mode", "slices", "slice_resolution", "soft_particles", "media_scale"})
+    for (const char* key : {"mode", "slices", "slice_resolution", "soft_particles", "layer_light", "media_scale"})
         EXPECT_TRUE(app.resource<Settings>().declared(key)) << key;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // The plugin's GPU passes (one .cpp + one shader pair each).
+#include <memory>
 #include <vector>
 
 #include "nimbus/gpu/gl_objects.h"
@@ -50,15 +51,22 @@ struct MediaTarget {
     const char* name = "media_color";
 };
 
+// How `particles` mode shades (MediaRenderSettings says what each means).
+struct ParticleShading {
+    bool softParticles = true;
+    bool layerLight = true;
+};
+
 // `particles` mode: sorted soft billboards into the media target (rgb in-scatter, a transmittance).
 class ParticlePass {
 public:
     ParticlePass();
     render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
-                               bool softParticles, const MediaTarget& target);
+                               ParticleShading shading, const MediaTarget& target);
 
 private:
-    LocalLightPrograms programs_;
+    LocalLightPrograms layerLight_;                  // MEDIA_LAYER_LIGHT: ParticleShading::layerLight
+    std::unique_ptr<LocalLightPrograms> pointLight_;  // without it, built when first asked for
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

@@ -189,7 +189,7 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
                                          *impostorRenderer_, target);
     } else {
         if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
-        media = particlePass_->add(graph, context, *buffer_, settings_.softParticles, target);
+        media = particlePass_->add(graph, context, *buffer_, {settings_.softParticles, settings_.layerLight}, target);
     }
     if (reduced) {
         if (!upsamplePass_) upsamplePass_ = std::make_unique<MediaUpsamplePass>();

@@ -10,15 +10,18 @@ namespace nimbus::media {
 
 inline constexpr GLuint kShadowDepthUnit = 4;
 
-ParticlePass::ParticlePass() : programs_({.vertex = "media/particles.vert", .fragment = "media/particles.frag"}) {}
+ParticlePass::ParticlePass()
+    : layerLight_({.vertex = "media/particles.vert", .fragment = "media/particles.frag", .defines = {"MEDIA_LAYER_LIGHT"}}) {}
 
 render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::FrameContext& context,
-                                         const ParticleGpuBuffer& buffer, bool softParticles, const MediaTarget& target) {
+                                         const ParticleGpuBuffer& buffer, ParticleShading shading, const MediaTarget& target) {
     struct Data {
         render::ResourceHandle media, depth, shadowMap, slices;
     };
     const int w = target.size.x, h = target.size.y;
-    const gpu::Program& program = programs_.forLights(context.input.lights);
+    if (!shading.layerLight && !pointLight_)
+        pointLight_ = std::make_unique<LocalLightPrograms>(gpu::ProgramDesc{.vertex = "media/particles.vert", .fragment = "media/particles.frag"});
+    const gpu::Program& program = (shading.layerLight ? layerLight_ : *pointLight_).forLights(context.input.lights);
     const auto& data = graph.addPass<Data>(
         "media_particles",
         [&](render::PassBuilder& builder, Data& d) {
@@ -27,8 +30,8 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
             if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
             if (context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
         },
-        [this, &program, &context, &buffer, softParticles, w, h, scale = target.fullResScale](const render::PassResources& resources,
-                                                                                       const Data& d) {
+        [this, &program, &context, &buffer, shading, w, h, scale = target.fullResScale](const render::PassResources& resources,
+                                                                                  const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
             glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
@@ -45,7 +48,7 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
             glBindTextureUnit(render::kSceneDepthUnit, resources.id(d.depth));
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
-            glProgramUniform1i(program.id(), 0, softParticles ? 1 : 0);
+            glProgramUniform1i(program.id(), 0, shading.softParticles ? 1 : 0);
             glProgramUniform2f(program.id(), 1, scale.x, scale.y);
             glDisable(GL_DEPTH_TEST);  // the fragment shader clips against scene depth itself
             glDisable(GL_CULL_FACE);

@@ -94,6 +94,7 @@ MediaRenderSettings readSettings(const Settings* settings) {
     if (auto v = settings->integer("slices", kMinSlices, kMaxSlices)) s.slices = static_cast<int>(*v);
     if (auto v = settings->integer("slice_resolution", 16, 4096)) s.sliceResolution = static_cast<int>(*v);
     if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
+    if (auto v = settings->boolean("layer_light")) s.layerLight = *v;
     if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
     if (auto v = settings->number("impostor_scale", 0.05, 4.0)) s.impostorScale = static_cast<float>(*v);
     if (auto v = settings->number("media_scale", 0.0625, 1.0)) s.mediaScale = static_cast<float>(*v);
@@ -172,6 +173,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("slices", "light slices per light view, 4..32 (default: chosen from the medium)");
     settings.declare("slice_resolution", "texels per side of a light slice (default 256)");
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
+    settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)))");
     settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
     settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25 (default 1)");
