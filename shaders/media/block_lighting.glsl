@@ -93,6 +93,29 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     float t0 = profile.front, t1 = profile.back;
     float pieceLength = (t1 - t0) / float(BLOCK_SHADING_PIECES);
     float alpha = oneMinusExpNeg(tau);
+    // The kernels' tails reach past [front, back] (which holds each particle's ±√3·R/3): where a
+    // shadow boundary crosses them, the lit share counts them, as the reference does (seed 19
+    // unseen variant 9, a ground through 4–8 mm particles: blocks 18.6% → 6.5%).
+    BlockProfile wide = profile;
+    if (profile.deviation > 0.0) {
+        wide.front -= tails.x;
+        wide.back += tails.y;
+    }
+    // Piece k: its extent, shading point and weight, the same for every light. Its weight is its own
+    // opacity behind the pieces in front of it, by the profile's mass in it (equal shares put a dense
+    // core's light in its thin tails).
+    vec2 pieceSpan[BLOCK_SHADING_PIECES];
+    float pieceAt[BLOCK_SHADING_PIECES], pieceWeight[BLOCK_SHADING_PIECES];
+    float before = 0.0;  // the profile's share of the block's optical depth in front of piece k
+    for (int k = 0; k < BLOCK_SHADING_PIECES; ++k) {
+        float pieceFront = t0 + float(k) * pieceLength;
+        pieceSpan[k] = vec2(k == 0 ? wide.front : pieceFront, k + 1 == BLOCK_SHADING_PIECES ? wide.back : pieceFront + pieceLength);
+        float after = k + 1 == BLOCK_SHADING_PIECES ? 1.0 : profileMassBefore(wide, pieceSpan[k].y);
+        float share = max(after - before, 0.0);
+        pieceAt[k] = pieceFront + shadingDepthFraction(tau * share) * pieceLength;
+        pieceWeight[k] = alpha > 0.0 ? oneMinusExpNeg(tau * share) * exp(-tau * before) / alpha : share;
+        before = after;
+    }
     vec3 scattered = frame.ambient.rgb;
     float radius = block.positionRadius.w;
     for (int i = 0; i < frame.counts.x; ++i) {
@@ -107,29 +130,13 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
             }
         }
 #endif
-        // The kernels' tails reach past [front, back] (which holds each particle's ±√3·R/3): where
-        // a shadow boundary crosses them, the lit share counts them, as the reference does (seed 19
-        // unseen variant 9, a ground through 4–8 mm particles: blocks 18.6% → 6.5%).
-        BlockProfile wide = profile;
-        if (profile.deviation > 0.0) {
-            wide.front -= tails.x;
-            wide.back += tails.y;
-        }
         BlockProfile piece = wide;
-        float before = 0.0;  // the profile's share of the block's optical depth in front of piece k
         for (int k = 0; k < BLOCK_SHADING_PIECES; ++k) {
-            float pieceFront = t0 + float(k) * pieceLength;
-            piece.front = k == 0 ? wide.front : pieceFront;
-            piece.back = k + 1 == BLOCK_SHADING_PIECES ? wide.back : pieceFront + pieceLength;
-            // Piece k's share: its own opacity, behind the pieces in front of it, by the profile's
-            // mass in it (equal shares put a dense core's light in its thin tails).
-            float after = k + 1 == BLOCK_SHADING_PIECES ? 1.0 : profileMassBefore(wide, piece.back);
-            float share = max(after - before, 0.0);
-            float t = pieceFront + shadingDepthFraction(tau * share) * pieceLength;
-            float weight = alpha > 0.0 ? oneMinusExpNeg(tau * share) * exp(-tau * before) / alpha : share;
-            before = after;
+            piece.front = pieceSpan[k].x;
+            piece.back = pieceSpan[k].y;
+            float t = pieceAt[k];
             float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, piece, t) : 1.0;
-            scattered += weight * scatteredLight(i, origin + dir * t, dir, block, visibility, -1.0);
+            scattered += pieceWeight[k] * scatteredLight(i, origin + dir * t, dir, block, visibility, -1.0);
         }
     }
     return block.albedoSigma.rgb * scattered + block.emissionG.rgb;
