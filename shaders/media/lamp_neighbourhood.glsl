@@ -41,7 +41,7 @@ float lampListWeight(LampList list, int light, vec3 x) {
 // Capped: the factor undoes what the layers drawn after this one take away in the blend, and past
 // e^50 their transmittance (at most e^−50) leaves nothing a float can give back. Uncapped, the
 // e^τ of a τ = 1e4 neighbour was inf, and the blend's 0 · inf made NaN pixels (a spot inside dense
-// particles: tests/stability lamp_behind_opaque_particle).
+// particles: tests/stability spot_in_opaque_cloud).
 const float MAX_LAMP_LOG_FACTOR = 50.0;
 void lampOrderCorrection(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], LayerOrder layer,
                          out float logFactor[LAMP_NODES]) {

@@ -93,8 +93,9 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
 // particle lit from the side is a half-space whose surface sends μ0/(μ0 + μ) of it. With τl linear
 // in v through its values at the entry and at v̄, the integral is closed-form and exact in both;
 // returns it over 1 − e^−τ, in place of e^−τl(v̄). Only where the slices resolve the particle
-// (mediumOpticalDepthPair): else the change of τl across it is the slices' spread of its own optical depth,
-// and the slope made a spot-lit particle of 8 mm 52% too bright (unseen seed 19, variant 02).
+// (mediumOpticalDepthPair): else the change of τl across it is the slices' spread of its own
+// optical depth, and the slope made a spot-lit particle of 8 mm 52% too bright (unseen seed 19,
+// variant 02).
 float layerLightTransmittance(int i, vec3 entry, vec3 p, float vBar, float tau, float radius) {
     if (!(vBar > 1e-4) || !(tau > 1e-4)) return exp(-mediumOpticalDepth(i, p));
     vec3 depths = mediumOpticalDepthPair(i, p, entry, radius);
