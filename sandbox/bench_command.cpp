@@ -152,7 +152,7 @@ int run(const BenchOptions& o) {
     const assets::RgbImage referenceImage = media::reference::renderReference(reference->inputs, referenceSettings);
     run.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
 
-    std::vector<BenchConfig> configs = standardSweep(run.particles);
+    std::vector<BenchConfig> configs = standardSweep(reference->particles);
     if (!o.only.empty()) {
         std::erase_if(configs, [&](const BenchConfig& c) { return std::find(o.only.begin(), o.only.end(), c.name) == o.only.end(); });
         if (configs.empty()) throwInputError("--only", o.only.front(), "", "matches no setting of the sweep");

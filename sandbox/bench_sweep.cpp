@@ -31,7 +31,7 @@ void renderFrame(ecs::App& app) {
 
 }  // namespace
 
-std::vector<BenchConfig> standardSweep(std::size_t particles) {
+std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles) {
     const int autoBlocks = media::automaticBlockCount(particles);
     std::vector<BenchConfig> sweep;
     auto add = [&](std::string name, std::vector<std::pair<std::string, std::string>> settings) {
@@ -44,7 +44,7 @@ std::vector<BenchConfig> standardSweep(std::size_t particles) {
     add("particles media_scale=0.25", {{"mode", "particles"}, {"media_scale", "0.25"}});
     add("blocks", {{"mode", "blocks"}});
     for (const int blocks : {std::max(1, autoBlocks / 4), std::max(1, autoBlocks / 2), autoBlocks * 2, autoBlocks * 4}) {
-        if (blocks == autoBlocks || static_cast<std::size_t>(blocks) > particles) continue;
+        if (blocks == autoBlocks || static_cast<std::size_t>(blocks) > particles.size()) continue;
         add("blocks blocks=" + std::to_string(blocks), {{"mode", "blocks"}, {"blocks", std::to_string(blocks)}});
     }
     add("blocks impostor_scale=0.25", {{"mode", "blocks"}, {"impostor_scale", "0.25"}});

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "nimbus/assets/image_io.h"
+#include "nimbus/media/particle_set.h"
 #include "nimbus/media/reference/image_metrics.h"
 #include "session.h"
 
@@ -18,9 +19,9 @@ struct BenchConfig {
     std::vector<std::pair<std::string, std::string>> settings;  // applied with Settings::set
 };
 
-// The sweep for a scene with `particles` particles: modes, slice counts, block counts, impostor
-// resolution, instancing and media scale.
-std::vector<BenchConfig> standardSweep(std::size_t particles);
+// The sweep for a scene's particles: modes, slice counts, block counts around the automatic one,
+// impostor resolution, instancing and media scale.
+std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles);
 
 struct BenchResult {
     BenchConfig config;

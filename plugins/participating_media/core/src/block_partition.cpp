@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "nimbus/media/optics.h"
+
 namespace nimbus::media {
 namespace {
 
@@ -34,16 +36,49 @@ void bisect(const ParticleSet& particles, std::vector<std::uint32_t>& order, std
 
 }  // namespace
 
-int automaticBlockCount(std::size_t particles) {
+int costModelBlockCount(std::size_t particles) {
     if (particles == 0) return 0;
-    return std::clamp(static_cast<int>(std::lround(2.0 * std::sqrt(static_cast<double>(particles)))), 1, 2048);
+    return std::clamp(static_cast<int>(std::lround(2.0 * std::sqrt(static_cast<double>(particles)))), 1, kMaxBlocks);
+}
+
+double blockThickness(const ParticleSet& particles, const BlockPartition& partition, const Block& block) {
+    // ∫ exp(−4.5 r²/R²) dV over the ball of radius R, per R³: 4π ∫₀¹ x² e^(−a x²) dx, a = 4.5.
+    const double a = kKernelFalloff;
+    const double massPerR3 = 4.0 * kPi * (std::sqrt(kPi) * std::erf(std::sqrt(a)) / (4.0 * a * std::sqrt(a)) - std::exp(-a) / (2.0 * a));
+    double mass = 0.0;
+    for (std::uint32_t k = block.first; k < block.first + block.count; ++k) {
+        const std::uint32_t i = partition.order[k];
+        const double r = particles.radius[i];
+        mass += massPerR3 * particles.sigma[i] * r * r * r;
+    }
+    return block.radius > 0.0 ? mass / (kPi * block.radius * block.radius) : 0.0;
+}
+
+int automaticBlockCount(const ParticleSet& particles) {
+    const std::size_t n = particles.size();
+    const int costModel = costModelBlockCount(n);
+    if (n < 2) return costModel;
+    const BlockPartition first = partitionIntoBlocks(particles, costModel);
+    std::vector<double> thickness;
+    thickness.reserve(first.blocks.size());
+    for (const Block& block : first.blocks) thickness.push_back(blockThickness(particles, first, block));
+    const auto median = thickness.begin() + static_cast<std::ptrdiff_t>(thickness.size() / 2);
+    std::nth_element(thickness.begin(), median, thickness.end());
+    if (!(*median > kMaxBlockThickness)) return costModel;
+    // A block's thickness grows as the cube root of its member count in a medium of even density, so
+    // the count wants (median / limit)³ times more blocks; in powers of two, so that a particle
+    // moving from one frame to the next does not change the count and with it every membership.
+    const double ratio = *median / kMaxBlockThickness;
+    const int doublings = std::min(20, static_cast<int>(std::lround(3.0 * std::log2(ratio))));
+    const int ceiling = std::max(costModel, std::min(kMaxBlocks, static_cast<int>(n / 2)));
+    return static_cast<int>(std::min<long long>(static_cast<long long>(costModel) << std::max(doublings, 0), ceiling));
 }
 
 BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount) {
     BlockPartition out;
     const std::size_t n = particles.size();
     if (n == 0) return out;
-    const std::size_t blocks = std::min<std::size_t>(n, static_cast<std::size_t>(blockCount > 0 ? blockCount : automaticBlockCount(n)));
+    const std::size_t blocks = std::min<std::size_t>(n, static_cast<std::size_t>(blockCount > 0 ? blockCount : automaticBlockCount(particles)));
     out.order.resize(n);
     std::iota(out.order.begin(), out.order.end(), 0u);
     bisect(particles, out.order, 0, blocks, n, blocks);
