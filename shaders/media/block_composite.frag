@@ -32,19 +32,10 @@ layout(location = 0) out vec4 outColor;
 // profile is a two-moment fit: where the mesh cuts a block of several particles it misplaced the
 // cut by up to a particle (block_scene_01's seam band: 4.12% with the profile, 3.82% with this,
 // measured with the slice counts of the time). Negative when the block's particles are not listed.
-float listedMassBefore(BlockTile tile, vec3 origin, vec3 dir, float t) {
-    int first = int(tile.instance.z), count = int(tile.instance.w);
-    if (count <= 0) return -1.0;
-    float before = 0.0, total = 0.0;
-    for (int k = first; k < first + count; ++k) {
-        GpuParticle p = particles[impostorItems[k].x];
-        Chord c = chordOf(origin, dir, p.positionRadius.xyz, p.positionRadius.w);
-        if (c.halfChord <= 0.0) continue;
-        float lo = max(-c.halfChord, -c.tClosest);  // the ray starts at the eye, as in the impostor
-        total += p.albedoSigma.w * chordIntegral(c, p.positionRadius.w, lo, c.halfChord);
-        before += p.albedoSigma.w * chordIntegral(c, p.positionRadius.w, lo, t - c.tClosest);
-    }
-    return total > 0.0 ? clamp(before / total, 0.0, 1.0) : -1.0;
+float listedMassBefore(ivec2 items, vec3 origin, vec3 dir, float t) {
+    if (items.y <= 0) return -1.0;
+    float total = listedOpticalDepth(items, origin, dir, 1e30);
+    return total > 0.0 ? clamp(listedOpticalDepth(items, origin, dir, t) / total, 0.0, 1.0) : -1.0;
 }
 
 void main() {
@@ -71,7 +62,9 @@ void main() {
     // moments give (block_lighting.glsl blockProfile), which also shapes the shading below.
     float momentOrigin = frameOrthographic() ? dot(tile.centreRadius.xyz, frame.cameraForward.xyz) : length(tile.centreRadius.xyz);
     BlockProfile profile = blockProfile(s.front, s.back, momentOrigin, s.sums3.xy / s.tau);
-    float share = tSurface < s.back + reach ? listedMassBefore(tile, origin, dir, tSurface) : 1.0;
+    ivec2 items = ivec2(tile.instance.zw);
+    bool cut = tSurface < s.back + reach;
+    float share = cut ? listedMassBefore(items, origin, dir, tSurface) : 1.0;
     if (share < 0.0) share = profileMassBefore(profile, tSurface);
     float tau = s.tau * share;
     float alpha = oneMinusExpNeg(tau);
@@ -89,6 +82,13 @@ void main() {
     profile.front = end > s.front ? s.front : end - reach;
     profile.back = end;
     vec2 tails = vec2(end > s.front ? reach : 0.0, end < s.back ? 0.0 : reach);  // none past a cut
+    // What is left in front of a cut is no longer the normal the moments describe: its own
+    // particles say where its mass lies.
+    if (cut && share > 0.0) {
+        profile.origin = origin;
+        profile.dir = dir;
+        profile.listed = items;
+    }
     vec3 source = blockSegmentSource(origin, dir, profile, tails, tau, block, layer);
     outColor = vec4(source * alpha, alpha);
 }

@@ -12,18 +12,39 @@ struct BlockProfile {
     float back;
     float mean;
     float deviation;  // 0: uniform
+    vec3 origin;      // the ray, for `listed`
+    vec3 dir;
+    ivec2 listed;     // the block's first item in impostorItems and its count; count 0: use the normal
 };
 
 // `moments`: the mean and second moment of ray distance − `origin` (block_data.glsl tileMomentOrigin).
 BlockProfile blockProfile(float front, float back, float origin, vec2 moments) {
     float deviation = sqrt(max(moments.y - moments.x * moments.x, 0.0));
-    return BlockProfile(front, back, origin + moments.x, deviation > 1e-6 * max(abs(back), 1.0) ? deviation : 0.0);
+    return BlockProfile(front, back, origin + moments.x, deviation > 1e-6 * max(abs(back), 1.0) ? deviation : 0.0, vec3(0.0),
+                        vec3(0.0, 0.0, 1.0), ivec2(0));
+}
+
+// The optical depth of the listed particles `items` along the ray from the eye to ray distance t
+// (the ray starts at the eye, as in the impostor).
+float listedOpticalDepth(ivec2 items, vec3 origin, vec3 dir, float t) {
+    float sum = 0.0;
+    for (int k = items.x; k < items.x + items.y; ++k) {
+        GpuParticle p = particles[impostorItems[k].x];
+        Chord c = chordOf(origin, dir, p.positionRadius.xyz, p.positionRadius.w);
+        if (c.halfChord <= 0.0) continue;
+        sum += p.albedoSigma.w * chordIntegral(c, p.positionRadius.w, max(-c.halfChord, -c.tClosest), t - c.tClosest);
+    }
+    return sum;
 }
 
 // Share of the profile's mass in front of ray distance t.
 float profileMassBefore(BlockProfile p, float t) {
     if (t <= p.front) return 0.0;
     if (t >= p.back) return 1.0;
+    if (p.listed.y > 0) {
+        float lo = listedOpticalDepth(p.listed, p.origin, p.dir, p.front), hi = listedOpticalDepth(p.listed, p.origin, p.dir, p.back);
+        if (hi - lo > 0.0) return clamp((listedOpticalDepth(p.listed, p.origin, p.dir, t) - lo) / (hi - lo), 0.0, 1.0);
+    }
     if (p.deviation > 0.0) {
         float scale = 1.0 / (p.deviation * 1.41421356);
         float lo = erfApprox((p.front - p.mean) * scale), hi = erfApprox((p.back - p.mean) * scale);
