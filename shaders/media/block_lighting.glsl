@@ -68,7 +68,9 @@ float blockLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float ta
     vec2 span = lampLayerSpan(i, origin, dir, layer);
     vec2 lit = spotConeInterval(i, origin, dir, Chord(0.0, 0.0, 0.0), min(t0, span.x), max(t1, span.y));
     float t[LAMP_NODES], f[LAMP_NODES];
-    if (!lampQuadrature(i, origin, dir, lit, t1 - t0, t, f)) return 0.0;
+    // All in φ: split at the block's particles' radius, its uniform rest (whose edges the far nodes
+    // do not see) made generated seed 9200 scene 01 6–12% dark around the lamp.
+    if (!lampQuadrature(i, origin, dir, lit, 1e30, t, f)) return 0.0;
     float extinction[LAMP_NODES], inFront[LAMP_NODES], listed[LAMP_NODES], logFactor[LAMP_NODES];
     float rest = max(tau - lampLayerMass(i, origin, dir, t, layer, extinction, inFront, listed), 0.0) / (t1 - t0);
     lampOrderCorrection(i, origin, dir, t, layer, logFactor);

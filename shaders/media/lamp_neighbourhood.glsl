@@ -11,7 +11,8 @@ struct LayerOrder {
     float tHidden;  // a particle whose closest point lies beyond this is not drawn (classic billboards)
 };
 
-const int LAMP_NODES = 8;  // the points of local_light_segment.glsl's quadrature
+const int LAMP_NEAR_NODES = 8;  // local_light_segment.glsl's quadrature: in φ around the lamp,
+const int LAMP_NODES = 14;      // then three in t on each side beyond it
 
 // Light `light`'s neighbour list: how many, where they start, and the reach within which it is complete.
 struct LampList {
