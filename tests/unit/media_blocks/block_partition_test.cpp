@@ -112,7 +112,9 @@ TEST(BlockPartition, AutomaticCountKeepsTheCostModelForThinMediaAndSplitsThickOn
         std::vector<double> thickness;
         for (const Block& b : p.blocks) thickness.push_back(blockThickness(thick, p, b));
         std::sort(thickness.begin(), thickness.end());
-        if (count < 250) EXPECT_LE(thickness[thickness.size() / 2], 1.5 * kMaxBlockThickness);
+        if (count < 250) {
+            EXPECT_LE(thickness[thickness.size() / 2], 1.5 * kMaxBlockThickness);
+        }
     }
     EXPECT_EQ(automaticBlockCount(ParticleSet{}), 0);
 }
