@@ -54,14 +54,15 @@ double blockThickness(const ParticleSet& particles, const BlockPartition& partit
     return block.radius > 0.0 ? mass / (kPi * block.radius * block.radius) : 0.0;
 }
 
-int automaticBlockCount(const ParticleSet& particles) {
+namespace {
+
+// The count the thickness bound asks for, given the partition at the cost model's count.
+int countForThickness(const ParticleSet& particles, const BlockPartition& costModelPartition) {
     const std::size_t n = particles.size();
-    const int costModel = costModelBlockCount(n);
-    if (n < 2) return costModel;
-    const BlockPartition first = partitionIntoBlocks(particles, costModel);
+    const int costModel = static_cast<int>(costModelPartition.blocks.size());
     std::vector<double> thickness;
-    thickness.reserve(first.blocks.size());
-    for (const Block& block : first.blocks) thickness.push_back(blockThickness(particles, first, block));
+    thickness.reserve(costModelPartition.blocks.size());
+    for (const Block& block : costModelPartition.blocks) thickness.push_back(blockThickness(particles, costModelPartition, block));
     const auto median = thickness.begin() + static_cast<std::ptrdiff_t>(thickness.size() / 2);
     std::nth_element(thickness.begin(), median, thickness.end());
     if (!(*median > kMaxBlockThickness)) return costModel;
@@ -74,11 +75,25 @@ int automaticBlockCount(const ParticleSet& particles) {
     return static_cast<int>(std::min<long long>(static_cast<long long>(costModel) << std::max(doublings, 0), ceiling));
 }
 
+}  // namespace
+
+int automaticBlockCount(const ParticleSet& particles) {
+    if (particles.size() < 2) return costModelBlockCount(particles.size());
+    return countForThickness(particles, partitionIntoBlocks(particles, costModelBlockCount(particles.size())));
+}
+
 BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount) {
     BlockPartition out;
     const std::size_t n = particles.size();
     if (n == 0) return out;
-    const std::size_t blocks = std::min<std::size_t>(n, static_cast<std::size_t>(blockCount > 0 ? blockCount : automaticBlockCount(particles)));
+    if (blockCount <= 0) {
+        // Automatic: the cost model's partition is measured, and kept where it is thin enough.
+        BlockPartition costModel = partitionIntoBlocks(particles, costModelBlockCount(n));
+        if (n < 2) return costModel;
+        const int count = countForThickness(particles, costModel);
+        return static_cast<std::size_t>(count) == costModel.blocks.size() ? costModel : partitionIntoBlocks(particles, count);
+    }
+    const std::size_t blocks = std::min<std::size_t>(n, static_cast<std::size_t>(blockCount));
     out.order.resize(n);
     std::iota(out.order.begin(), out.order.end(), 0u);
     bisect(particles, out.order, 0, blocks, n, blocks);
