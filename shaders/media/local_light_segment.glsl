@@ -44,17 +44,25 @@ vec2 spotConeInterval(int i, vec3 origin, vec3 dir, Chord c, float lo, float hi)
     return vec2(a, b);
 }
 
-// The nodes of ∫ f(t)/d(t)² dt over [a, b] = lit for light i: Gauss–Legendre in φ with
-// t = t_l + b·tan φ (t_l the lamp's closest approach along the ray, b its distance) within `reach`
-// of t_l, where 1/d² peaks, and in t beyond it, where the kernel in f varies and 1/d² hardly does
-// (reach 1e30: all in φ). φ alone squeezes a chord that reaches far past the lamp into a sliver
-// next to ±π/2; the caller splits where its kernel's bulk lies away from the lamp. Fills the ray
-// parameters t[j] and weights w[j] (Jacobian and 1/d² included: Σ w_j f(t_j) ≈ the integral);
-// false when the interval is empty. b is at least 1e-4 of the interval (a lamp exactly on the ray).
-bool lampQuadrature(int i, vec3 origin, vec3 dir, vec2 lit, float reach, out float t[LAMP_NODES], out float w[LAMP_NODES]) {
+// The nodes of ∫ f(t)/d(t)² dt over [a, b] = lit for light i, f carrying a kernel centred at ray
+// parameter `kernelAt` with radius `radius` (deviation radius/3). Gauss–Legendre in φ with
+// t = t_l + b·tan φ (t_l the lamp's closest approach along the ray, b its distance), where 1/d²
+// peaks. Where the kernel's centre lies more than two deviations from t_l, its bulk and the
+// lamp's peak are integrated apart, split halfway: φ within that reach of t_l, t beyond it, where
+// the kernel varies and 1/d² hardly does. φ alone squeezed the far chord into a sliver next to
+// ±π/2 with no node in the bulk, and a lamp near a particle's rim (a fiftieth of the peak density)
+// glowed 7–23% too bright (make_block_scenes.py seed 9300, scene 07, its particles one by one);
+// now within ±3%, and campfire.gltf 2.43% → 2.37%. Splitting at one deviation, or in ln |t − t_l|
+// beyond it, fixed the rim but took campfire.gltf to 2.7–2.8%. Fills the ray parameters t[j] and
+// weights w[j] (Jacobian and 1/d² included: Σ w_j f(t_j) ≈ the integral); false when the interval
+// is empty. b is at least 1e-4 of the interval (a lamp exactly on the ray).
+bool lampQuadrature(int i, vec3 origin, vec3 dir, vec2 lit, float kernelAt, float radius, out float t[LAMP_NODES],
+                    out float w[LAMP_NODES]) {
     vec3 toLight = lights[i].position.xyz - origin;
     float tLight = dot(toLight, dir);
     float b = max(length(toLight - tLight * dir), 1e-4 * (lit.y - lit.x));
+    float apart = abs(tLight - kernelAt);
+    float reach = apart > 2.0 * radius / 3.0 ? 0.5 * apart : 1e30;
     float near0 = clamp(tLight - reach, lit.x, lit.y), near1 = clamp(tLight + reach, lit.x, lit.y);
     bool split = near1 > near0;
     if (!split) {
@@ -106,15 +114,7 @@ vec2 localLightSegment(vec3 origin, vec3 dir, Chord c, float radius, float lo, f
     float sigma = particle.albedoSigma.w;
     float alpha = oneMinusExpNeg(sigma * chordIntegral(c, radius, lo, hi));
     float t[LAMP_NODES], f[LAMP_NODES];
-    // Where the kernel's centre lies more than two deviations (2R/3) from the lamp's closest approach
-    // along the ray, its bulk and the lamp's peak are integrated apart, split halfway: φ alone put no
-    // node in a bulk far from the lamp, and a lamp near a particle's rim (a fiftieth of the peak
-    // density) glowed 7–23% too bright (make_block_scenes.py seed 9300, scene 07, its particles one
-    // by one); now within ±3%, and campfire.gltf 2.43% → 2.37%. Splitting at one deviation, or in
-    // ln |t − t_l| beyond it, fixed the rim but took campfire.gltf to 2.7–2.8%.
-    float apart = abs(dot(lights[i].position.xyz - origin, dir) - c.tClosest);
-    float reach = apart > 2.0 * radius / 3.0 ? 0.5 * apart : 1e30;
-    if (!(alpha > 0.0) || !lampQuadrature(i, origin, dir, lit + c.tClosest, reach, t, f))
+    if (!(alpha > 0.0) || !lampQuadrature(i, origin, dir, lit + c.tClosest, c.tClosest, radius, t, f))
         return vec2(0.0, 0.5 * (lit.x + lit.y));
     float k = KERNEL_FALLOFF / (radius * radius);
     vec3 lightPos = lights[i].position.xyz;
