@@ -78,8 +78,7 @@ int countForThickness(const ParticleSet& particles, const BlockPartition& costMo
 }  // namespace
 
 int automaticBlockCount(const ParticleSet& particles) {
-    if (particles.size() < 2) return costModelBlockCount(particles.size());
-    return countForThickness(particles, partitionIntoBlocks(particles, costModelBlockCount(particles.size())));
+    return static_cast<int>(partitionIntoBlocks(particles, 0).blocks.size());
 }
 
 BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount) {

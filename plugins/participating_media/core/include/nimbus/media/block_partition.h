@@ -25,12 +25,12 @@
 // through it, blockThickness) exceeds 0.5, about where its own transmittance varies by e^−0.5, the
 // automatic count doubles round(3·log2(median / 0.5)) times, at most to N/2: each doubling thins
 // blocks by 2^(1/3). The cost model's partition is the one measured, and kept when it is thin
-// enough, so a thin medium is partitioned once per frame, a thick one twice. Measured at 256×144 on generated scenes
-// (make_block_scenes.py seeds 9100 and 9200, not committed): two clouds of σ 11–14 had median
-// thickness 1.5 and 1.2 at 2√N blocks, and blocks erred more than billboards without soft
-// particles around the wing (4.80% vs 3.62%, 7.84% vs 5.57%); at N/2 blocks 1.48% and 5.38%.
-// explosion.gltf (0.87) goes from 28 to 100 blocks; cloud.gltf (0.31) and cumulus.gltf (0.45)
-// keep 2√N.
+// enough, so a thin medium is partitioned once per frame, a thick one twice. Measured at 256×144
+// on generated scenes (make_block_scenes.py seeds 9100 and 9200, not committed): two clouds of
+// σ 11–14 had median thickness 1.5 and 1.2 at 2√N blocks, and blocks erred more than billboards
+// without soft particles around the wing (4.80% vs 3.62%, 7.84% vs 5.57%); at N/2 blocks 1.48%
+// and 5.38%. explosion.gltf at 0.8 s goes from 28 to 100 blocks; cloud.gltf (median 0.31) and
+// cumulus.gltf (0.45) keep 2√N.
 #include <cstdint>
 #include <vector>
 
@@ -60,8 +60,8 @@ inline constexpr double kMaxBlockThickness = 0.5;
 // The cost model's count, round(2√N) clamped to [1, kMaxBlocks] (0 for no particles).
 int costModelBlockCount(std::size_t particles);
 
-// The count partitionIntoBlocks(particles, 0) makes: the cost model's, doubled where its median
-// block is thicker than kMaxBlockThickness (see above).
+// The count partitionIntoBlocks(particles, 0) makes (by making it): the cost model's, doubled
+// where its median block is thicker than kMaxBlockThickness (see above).
 int automaticBlockCount(const ParticleSet& particles);
 
 // A block's mean optical depth through it: its members' kernel mass over its bounding sphere's
