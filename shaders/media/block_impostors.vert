@@ -35,15 +35,27 @@ void main() {
         vec4 clip = uProjection * vec4(c + vec3(corner * pr.w, 0.0), 1.0);
         ndc = clip.xy / clip.w;
     } else {
+        // The tangent cone's quad, perpendicular to the eye→centre axis. Its corners reach further
+        // sideways than the sphere; the ndc division below is only valid for corners in front of the
+        // near plane, so a sphere close to the eye and seen obliquely (a lamp beside a particle) takes
+        // the whole tile too: a corner behind the eye flipped the quad off the tile, and the particle
+        // was missing from that light view (seed 9300 scene 07: 66% of one cube face's optical depth).
         float d = length(c);
-        if (d <= pr.w * 1.001 || -c.z - pr.w <= uParams.y * 2.0) {
-            ndc = mix(tile.rect.xy, tile.rect.zw, corner * 0.5 + 0.5);  // eye in or near the sphere: the whole tile
-        } else {
+        bool whole = d <= pr.w * 1.001 || -c.z - pr.w <= uParams.y * 2.0;
+        vec3 right = vec3(1.0, 0.0, 0.0), up = vec3(0.0, 1.0, 0.0);
+        float half_ = 0.0;
+        if (!whole) {
             vec3 axis = c / d;
             vec3 helper = abs(axis.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-            vec3 right = normalize(cross(axis, helper));
-            vec3 up = cross(right, axis);
-            float half_ = pr.w * d / sqrt(d * d - pr.w * pr.w);
+            right = normalize(cross(axis, helper));
+            up = cross(right, axis);
+            half_ = pr.w * d / sqrt(d * d - pr.w * pr.w);
+            float nearestCorner = -c.z - (abs(right.z) + abs(up.z)) * half_;  // the corner closest to the eye's plane
+            whole = nearestCorner <= uParams.y * 2.0;
+        }
+        if (whole) {
+            ndc = mix(tile.rect.xy, tile.rect.zw, corner * 0.5 + 0.5);
+        } else {
             vec4 clip = uProjection * vec4(c + (right * corner.x + up * corner.y) * half_, 1.0);
             ndc = clip.xy / clip.w;
         }

@@ -43,6 +43,9 @@ void main() {
     float scale = particle.albedoSigma.w * exp(-k * chord.b2) * (HALF_SQRT_PI / sk);
     // A perspective view's rays start at the light: a light inside the sphere sees only the part ahead.
     float start = uParams.x > 0.5 ? max(-chord.halfChord, -chord.tClosest) : -chord.halfChord;
+    // The sphere wholly behind the light along this ray (the view covers everything for a sphere
+    // beside the light): nothing lies ahead, and the erf difference below would be negative.
+    if (start >= chord.halfChord) discard;
     float entry = erfApprox(sk * start);
 
     int slices = int(uParams.w);

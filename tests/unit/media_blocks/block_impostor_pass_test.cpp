@@ -225,5 +225,31 @@ TEST_F(BlockImpostorPassTest, OrthographicLightImpostorsMeasureFromTheViewPlane)
     EXPECT_GT(c.covered, 2000u);
 }
 
+TEST_F(BlockImpostorPassTest, PerspectiveLightBesideObliqueSpheresKeepsTheirWholeFootprint) {
+    // A lamp's cube face with spheres just outside the lamp (d = 1.1 R), off the face's axis: the
+    // tangent cone's quad around such a sphere reaches behind the lamp's plane, where dividing by
+    // clip w flips a corner, so the quad must give way to the whole tile (seed 9300 scene 07 lost
+    // 66% of one face's optical depth to this).
+    ParticleSet set;
+    const Medium medium{};
+    // (Angles where the sphere lies wholly in front of the lamp but a corner of its quad does not.)
+    const double angles[4] = {19.0, 20.0, 21.0, 20.0}, turns[4] = {30.0, 45.0, 60.0, 135.0};
+    for (int k = 0; k < 4; ++k) {
+        const double angle = glm::radians(angles[k]), turn = glm::radians(turns[k]);
+        const double radius = 0.6 + 0.2 * k;
+        const glm::dvec3 axis(std::sin(angle) * std::cos(turn), std::sin(angle) * std::sin(turn), -std::cos(angle));
+        set.push(axis * (1.1 * radius), static_cast<float>(radius), 0.8f, medium);
+    }
+    const BlockPartition partition = partitionIntoBlocks(set, 4);
+    const glm::mat4 view(1.0f);  // the lamp at the origin, looking down −Z
+    const float nearDepth = 0.01f;
+    const ImpostorView lamp{view, render::reversedPerspective(glm::radians(90.0), 1.0, nearDepth, 20.0) * view, true, glm::vec3(0.0f),
+                            nearDepth, glm::ivec2(64)};
+    const BlockViewPlan plan = planBlockView(partition, lamp, glm::dvec3(0.0), 1.0f, 2048);
+    const ImpostorCheck c = renderAndCheck(set, partition, plan, glm::dvec3(0.0));
+    report("lamp beside oblique spheres", c);
+    EXPECT_GT(c.covered, 1000u);
+}
+
 }  // namespace
 }  // namespace nimbus::media
