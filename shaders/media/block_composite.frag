@@ -62,10 +62,16 @@ void main() {
     // moments give (block_lighting.glsl blockProfile), which also shapes the shading below.
     float momentOrigin = frameOrthographic() ? dot(tile.centreRadius.xyz, frame.cameraForward.xyz) : length(tile.centreRadius.xyz);
     BlockProfile profile = blockProfile(s.front, s.back, momentOrigin, s.sums3.xy / s.tau);
-    ivec2 items = ivec2(tile.instance.zw);
     bool cut = tSurface < s.back + reach;
+    // The exact cut walks the block's particles; the build without it (block_composite_pass.cpp
+    // draws with it only the blocks a mesh comes near) keeps the profile's cut for safety.
+#ifdef BLOCK_EXACT_CUT
+    ivec2 items = ivec2(tile.instance.zw);
     float share = cut ? listedMassBefore(items, origin, dir, tSurface) : 1.0;
     if (share < 0.0) share = profileMassBefore(profile, tSurface);
+#else
+    float share = cut ? profileMassBefore(profile, tSurface) : 1.0;
+#endif
     float tau = s.tau * share;
     float alpha = oneMinusExpNeg(tau);
     if (alpha <= 0.0) discard;
@@ -84,11 +90,13 @@ void main() {
     vec2 tails = vec2(end > s.front ? reach : 0.0, end < s.back ? 0.0 : reach);  // none past a cut
     // What is left in front of a cut is no longer the normal the moments describe: its own
     // particles say where its mass lies.
+#ifdef BLOCK_EXACT_CUT
     if (cut && share > 0.0) {
         profile.origin = origin;
         profile.dir = dir;
         profile.listed = items;
     }
+#endif
     vec3 source = blockSegmentSource(origin, dir, profile, tails, tau, block, layer);
     outColor = vec4(source * alpha, alpha);
 }

@@ -5,10 +5,13 @@
 
 layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
 
+layout(location = 2) uniform int uFirstRank;  // the draw covers ranks uFirstRank onwards (block_composite_pass.cpp draws runs)
+
 flat out ivec2 vBlock;  // x: the block, y: its rank in the back-to-front order
 
 void main() {
-    vBlock = ivec2(drawOrder[gl_InstanceID], gl_InstanceID);
+    int rank = uFirstRank + gl_InstanceID;
+    vBlock = ivec2(drawOrder[rank], rank);
     BlockTile tile = blockTiles[vBlock.x];
     if (tile.atlas.z <= 0.0) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);

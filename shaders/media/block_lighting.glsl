@@ -41,10 +41,12 @@ float listedOpticalDepth(ivec2 items, vec3 origin, vec3 dir, float t) {
 float profileMassBefore(BlockProfile p, float t) {
     if (t <= p.front) return 0.0;
     if (t >= p.back) return 1.0;
+#ifdef BLOCK_EXACT_CUT
     if (p.listed.y > 0) {
         float lo = listedOpticalDepth(p.listed, p.origin, p.dir, p.front), hi = listedOpticalDepth(p.listed, p.origin, p.dir, p.back);
         if (hi - lo > 0.0) return clamp((listedOpticalDepth(p.listed, p.origin, p.dir, t) - lo) / (hi - lo), 0.0, 1.0);
     }
+#endif
     if (p.deviation > 0.0) {
         float scale = 1.0 / (p.deviation * 1.41421356);
         float lo = erfApprox((p.front - p.mean) * scale), hi = erfApprox((p.back - p.mean) * scale);

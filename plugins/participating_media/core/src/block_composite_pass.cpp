@@ -2,21 +2,79 @@
 // front over their screen rectangles (shaders/media/block_composite.*).
 #include "block_passes.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_access.hpp>
+
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/render/frame_data.h"
+#include "nimbus/render/gpu_scene.h"
 
 namespace nimbus::media {
 
 inline constexpr GLuint kShadowDepthUnit = 4;
 inline constexpr GLuint kImpostorDepthsUnit = 5;
+inline constexpr GLint kFirstRankLocation = 2;  // block_composite.vert uFirstRank
+
+std::vector<MeshBox> meshInstanceBoxes(const render::FrameInput& input) {
+    std::vector<MeshBox> boxes;
+    if (input.gpuScene == nullptr) return boxes;
+    boxes.reserve(input.instances.size());
+    for (const render::MeshInstance& instance : input.instances) {
+        const auto& [lo, hi] = input.gpuScene->localBounds(instance.mesh);
+        if (lo.x > hi.x) continue;  // a mesh without triangles
+        const glm::dvec3 localCentre = 0.5 * (glm::dvec3(lo) + glm::dvec3(hi)), localHalf = 0.5 * (glm::dvec3(hi) - glm::dvec3(lo));
+        MeshBox box;
+        box.centre = glm::dvec3(instance.world * glm::dvec4(localCentre, 1.0));
+        const glm::dmat3 linear(instance.world);
+        double length[3];
+        for (int k = 0; k < 3; ++k) length[k] = glm::length(linear[k]);
+        const bool orthogonal = std::abs(glm::dot(linear[0], linear[1])) <= 1e-9 * length[0] * length[1] &&
+                                std::abs(glm::dot(linear[0], linear[2])) <= 1e-9 * length[0] * length[2] &&
+                                std::abs(glm::dot(linear[1], linear[2])) <= 1e-9 * length[1] * length[2];
+        if (orthogonal && length[0] > 0.0 && length[1] > 0.0 && length[2] > 0.0) {
+            for (int k = 0; k < 3; ++k) {
+                box.axis[k] = linear[k] / length[k];
+                box.half[k] = localHalf[k] * length[k];
+            }
+        } else {
+            for (int k = 0; k < 3; ++k) box.half[k] = glm::dot(glm::abs(glm::row(linear, k)), localHalf);  // axis-aligned around it
+        }
+        boxes.push_back(box);
+    }
+    return boxes;
+}
+
+std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, const std::vector<MeshBox>& meshes) {
+    std::vector<std::uint8_t> near(partition.blocks.size(), 0);
+    for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
+        const Block& block = partition.blocks[b];
+        const double reach = block.radius + block.meanParticleRadius;
+        for (const MeshBox& box : meshes) {
+            const glm::dvec3 d = block.centre - box.centre;
+            double outside = 0.0;  // squared distance from the centre to the box
+            for (int k = 0; k < 3; ++k) {
+                const double excess = std::max(std::abs(glm::dot(d, box.axis[k])) - box.half[k], 0.0);
+                outside += excess * excess;
+            }
+            if (outside <= reach * reach) {
+                near[b] = 1;
+                break;
+            }
+        }
+    }
+    return near;
+}
 
 BlockCompositePass::BlockCompositePass()
-    : programs_({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"}) {}
+    : programs_({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"}),
+      exactCutPrograms_({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag", .defines = {"BLOCK_EXACT_CUT"}}) {}
 
 render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
-                                               const std::vector<std::uint32_t>& backToFront, const BlockGpuBuffers& blocks,
-                                               const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors,
-                                               const MediaTarget& target) {
+                                               const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& exactCut,
+                                               const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
+                                               const BlockImpostorRenderer& impostors, const MediaTarget& target) {
     struct Impostors {
         render::ResourceHandle depths, sums1, sums2, moments;
     };
@@ -39,7 +97,20 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
         render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments;
     };
     const int w = target.size.x, h = target.size.y;
-    const gpu::Program& program = programs_.forLights(context.input.lights);
+    const gpu::Program& plain = programs_.forLights(context.input.lights);
+    const gpu::Program& withCut = exactCutPrograms_.forLights(context.input.lights);
+    // Runs of consecutive ranks that want the same build, drawn in order: (first rank, count, exact cut).
+    struct Run {
+        GLint first;
+        GLsizei count;
+        bool cut;
+    };
+    std::vector<Run> runs;
+    for (std::size_t r = 0; r < backToFront.size(); ++r) {
+        const bool cut = exactCut[backToFront[r]] != 0;
+        if (runs.empty() || runs.back().cut != cut) runs.push_back({static_cast<GLint>(r), 0, cut});
+        ++runs.back().count;
+    }
     const auto& data = graph.addPass<Composite>(
         "media_blocks",
         [&](render::PassBuilder& builder, Composite& d) {
@@ -52,8 +123,8 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.sums2 = builder.read(made.sums2);
             d.moments = builder.read(made.moments);
         },
-        [this, &program, &context, &backToFront, &blocks, &particles, w, h, scale = target.fullResScale](const render::PassResources& r,
-                                                                                            const Composite& d) {
+        [this, &plain, &withCut, runs, &context, &blocks, &particles, w, h, scale = target.fullResScale](const render::PassResources& r,
+                                                                                                       const Composite& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
             glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
@@ -61,8 +132,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glViewport(0, 0, w, h);
             const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
-            glUseProgram(program.id());
-            glProgramUniform2f(program.id(), 1, scale.x, scale.y);
+            for (const gpu::Program* program : {&plain, &withCut}) glProgramUniform2f(program->id(), 1, scale.x, scale.y);
             context.frameData->bind();
             blocks.bind(0);
             particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
@@ -80,7 +150,12 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glBlendEquation(GL_FUNC_ADD);
             glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
             glBindVertexArray(vertexArray_.id());
-            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(backToFront.size()));
+            for (const Run& run : runs) {
+                const GLuint program = (run.cut ? withCut : plain).id();
+                glUseProgram(program);
+                glProgramUniform1i(program, kFirstRankLocation, run.first);
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, run.count);
+            }
             glBindVertexArray(0);
             glDisable(GL_BLEND);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -185,7 +185,8 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
                          [&](std::uint32_t a, std::uint32_t b) { return keys[a] > keys[b]; });
         if (!impostorRenderer_) impostorRenderer_ = std::make_unique<BlockImpostorRenderer>();
         if (!blockCompositePass_) blockCompositePass_ = std::make_unique<BlockCompositePass>();
-        media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, *blockBuffers_, *buffer_,
+        const std::vector<std::uint8_t> exactCut = blocksNearMeshes(frame.partition, meshInstanceBoxes(context.input));
+        media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, exactCut, *blockBuffers_, *buffer_,
                                          *impostorRenderer_, target);
     } else {
         if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
