@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/gtc/matrix_access.hpp>
 
@@ -48,10 +49,26 @@ std::vector<MeshBox> meshInstanceBoxes(const render::FrameInput& input) {
 
 std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, const std::vector<MeshBox>& meshes) {
     std::vector<std::uint8_t> near(partition.blocks.size(), 0);
-    for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
+    // Only meshes whose axis-aligned hull meets the blocks' reach at all are tested block by block
+    // (a level of many meshes around one cloud).
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (const Block& block : partition.blocks) {
+        const double reach = block.radius + block.meanParticleRadius;
+        lo = glm::min(lo, block.centre - reach);
+        hi = glm::max(hi, block.centre + reach);
+    }
+    std::vector<const MeshBox*> candidates;
+    for (const MeshBox& box : meshes) {
+        glm::dvec3 hull(0.0);
+        for (int k = 0; k < 3; ++k) hull += glm::abs(box.axis[k]) * box.half[k];
+        if (glm::all(glm::lessThanEqual(box.centre - hull, hi)) && glm::all(glm::greaterThanEqual(box.centre + hull, lo)))
+            candidates.push_back(&box);
+    }
+    for (std::size_t b = 0; b < partition.blocks.size() && !candidates.empty(); ++b) {
         const Block& block = partition.blocks[b];
         const double reach = block.radius + block.meanParticleRadius;
-        for (const MeshBox& box : meshes) {
+        for (const MeshBox* candidate : candidates) {
+            const MeshBox& box = *candidate;
             const glm::dvec3 d = block.centre - box.centre;
             double outside = 0.0;  // squared distance from the centre to the box
             for (int k = 0; k < 3; ++k) {
