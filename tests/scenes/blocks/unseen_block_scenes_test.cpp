@@ -29,10 +29,10 @@ constexpr double kMaxRelRmse = 0.08;
 
 // Measured rel_rmse at 256×144 (blocks / particles); 01, 04 and 07 have a point light:
 //   00 blob   τ 0.6  wing        1.75% / 1.75%      05 blob   τ 4.0  plate       0.49% / 0.44%
-//   01 blob          wing+lamp   2.06% / 1.84%      06 layer  τ 1.5  wing        1.33% / 1.33%
-//   02 twin   τ 3.0  plate       0.56% / 0.55%      07 cigar         plate+lamp  1.15% / 0.65%
+//   01 blob          wing+lamp   1.95% / 1.84%      06 layer  τ 1.5  wing        1.33% / 1.33%
+//   02 twin   τ 3.0  plate       0.56% / 0.55%      07 cigar         plate+lamp  1.08% / 0.65%
 //   03 tower  τ 1.0  wing        0.94% / 0.93%      08 tower  τ 5.5  plate       0.33% / 0.37%
-//   04 cigar         plate+lamp  1.44% / 1.38%      09 cigar  τ 2.2  wing        1.64% / 1.64%
+//   04 cigar         plate+lamp  1.44% / 1.26%      09 cigar  τ 2.2  wing        1.64% / 1.64%
 // The lamps' scenes were 26.5%, 14.3% and 27.4% in blocks while a block was lit at one point per
 // pixel; its light is now integrated over each block's segment with the density of the block's
 // own particles near the lamp (block_lighting.glsl). 04 was also 11% in both modes: its lamp
@@ -64,8 +64,8 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
 // The seam criterion of cloud_blocks_test.cpp: in the band of pixels where the wing lies inside
 // the cloud, blocks err less than billboards without soft particles. Seam band rel_rmse, blocks
 // (the automatic count: 2√N, 48 for 04) vs particles with soft_particles=off:
-//   00 0.32% vs 1.11%, 01 2.60% vs 3.07%, 02 3.77% vs 4.14%, 03 0.41% vs 0.87%, 04 9.43% vs 38.0%,
-//   05 1.59% vs 2.33%, 06 0.68% vs 0.93%, 07 3.83% vs 4.13%, 08 2.80% vs 3.03%, 09 1.23% vs 3.41%
+//   00 0.32% vs 1.11%, 01 2.43% vs 3.07%, 02 3.77% vs 4.14%, 03 0.41% vs 0.87%, 04 9.39% vs 37.9%,
+//   05 1.59% vs 2.33%, 06 0.68% vs 0.93%, 07 3.49% vs 4.13%, 08 2.80% vs 3.03%, 09 1.23% vs 3.41%
 // History: only 00 passed while a block was cut at the surface uniformly over [front, back] and
 // shaded at one point. With a depth profile from the impostor's moments, silhouettes cut at the
 // particles and a texel per pixel for small particles, 01 still failed (4.12% vs 4.03%): the
@@ -80,11 +80,13 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
 // 05 3.36% → 1.66%, 07 6.83% → 3.84%, 08 4.40% → 3.49%; cloud.gltf 1.18% → 0.76%); counting the
 // kernels' tails past [front, back] took 08 to 3.20%, and the mass in front of a cut read from the
 // block's own particles (its wing shadows the cloud in front of its dark face) to 2.80%.
-// Generated scenes, not committed (make_block_scenes.py with BASE_SEED 9100, 9200, 9300): 27 of 30
+// Generated scenes, not committed (make_block_scenes.py with BASE_SEED 9100 to 9500): 47 of 50
 // pass. Two σ 11–14 clouds that failed pass since the automatic count bounds a block's optical
-// thickness (block_partition.h). Failing: 9200/07 (4.41% vs 3.58%: a block's own shadow, median
-// thickness 0.49, just under the bound), 9300/07 (7.24% vs 3.51%: a lamp inside the cloud near a
-// particle's rim, blocks' glow 2–9% bright) and 9300/01 (2.04% vs 2.02%).
+// thickness (block_partition.h); 9300/07 (7.24% → 3.93%) and the lamp scenes here (01 2.60% →
+// 2.43%, 07 3.83% → 3.49%) improved when lamp views stopped losing particles beside the lamp
+// (block_impostors.vert). Failing, all with a lamp: 9200/07 (4.41% vs 3.57%: a block's own
+// shadow, median thickness 0.49, just under the bound), 9300/07 (3.93% vs 3.57%: both modes dark
+// at the lamp, blocks more) and 9300/01 (2.12% vs 2.02%).
 const std::map<std::string, std::string> kSeamKnownFailing = {};  // none of the committed ten now
 
 std::vector<std::string> seamScenes(bool knownFailing) {

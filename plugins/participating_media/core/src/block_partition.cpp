@@ -43,8 +43,10 @@ int costModelBlockCount(std::size_t particles) {
 
 double blockThickness(const ParticleSet& particles, const BlockPartition& partition, const Block& block) {
     // ∫ exp(−4.5 r²/R²) dV over the ball of radius R, per R³: 4π ∫₀¹ x² e^(−a x²) dx, a = 4.5.
-    const double a = kKernelFalloff;
-    const double massPerR3 = 4.0 * kPi * (std::sqrt(kPi) * std::erf(std::sqrt(a)) / (4.0 * a * std::sqrt(a)) - std::exp(-a) / (2.0 * a));
+    static const double massPerR3 = [] {
+        const double a = kKernelFalloff;
+        return 4.0 * kPi * (std::sqrt(kPi) * std::erf(std::sqrt(a)) / (4.0 * a * std::sqrt(a)) - std::exp(-a) / (2.0 * a));
+    }();
     double mass = 0.0;
     for (std::uint32_t k = block.first; k < block.first + block.count; ++k) {
         const std::uint32_t i = partition.order[k];
