@@ -34,19 +34,3 @@ float mediumOpticalDepth(int lightIndex, vec3 p) {
     if (first < 0) return 0.0;
     return viewOpticalDepth(transmittanceViews[lightViewIndex(first, int(L.media.y), L.position.xyz, p)], p);
 }
-
-// mediumOpticalDepth at p (x) and at q (y), both from p's light view, and in z 1 where the slices
-// resolve a particle of this radius at p (slice planes and texels no farther apart than it is
-// wide), else 0: there the particle's own optical depth is spread over the texel and the slice
-// interval, so how τ changes across the particle is not its own. One light and view read for all.
-vec3 mediumOpticalDepthPair(int lightIndex, vec3 p, vec3 q, float radius) {
-    if (frame.counts.y == 0) return vec3(0.0, 0.0, 1.0);
-    GpuLight L = lights[lightIndex];
-    int first = int(L.media.x);
-    if (first < 0) return vec3(0.0, 0.0, 1.0);
-    GpuLightView v = transmittanceViews[lightViewIndex(first, int(L.media.y), L.position.xyz, p)];
-    float spacing = (v.params.z - v.params.y) / max(v.params.w, 1.0);
-    float texel = v.params2.y * (v.params.x > 0.5 ? max(-(v.view * vec4(p, 1.0)).z, 0.0) : 1.0);
-    bool resolved = spacing <= 2.0 * radius && texel <= radius;
-    return vec3(viewOpticalDepth(v, p), resolved ? viewOpticalDepth(v, q) : 0.0, resolved ? 1.0 : 0.0);
-}

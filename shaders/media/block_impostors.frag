@@ -11,7 +11,7 @@
 
 layout(location = 0) uniform mat4 uView;
 layout(location = 2) uniform vec4 uParams;  // x: perspective
-layout(location = 4) uniform mat4 uInverseViewProjection;
+layout(location = 4) uniform vec2 uHalfExtent;  // tan of the half angles, or half size in metres (view_rays.glsl)
 layout(location = 5) uniform vec3 uEye;
 
 flat in int vParticle;
@@ -26,7 +26,7 @@ void main() {
     GpuParticle particle = particles[vParticle];
     BlockTile tile = blockTiles[vBlock];
     vec3 origin, dir;
-    viewRay(tileNdc(tile, gl_FragCoord.xy), uInverseViewProjection, uView, uParams.x > 0.5, uEye, origin, dir);
+    viewRay(tileNdc(tile, gl_FragCoord.xy), uHalfExtent, uView, uParams.x > 0.5, uEye, origin, dir);
     float radius = particle.positionRadius.w;
     Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, radius);
     // Blue (MIN) holds the edge distance: how far the ray passes outside the particle's sphere,

@@ -10,7 +10,7 @@
 
 layout(location = 0) uniform mat4 uView;
 layout(location = 2) uniform vec4 uParams;  // x: perspective, y: slice near, z: slice far, w: slices
-layout(location = 3) uniform mat4 uInverseViewProjection;
+layout(location = 3) uniform vec2 uHalfExtent;  // tan of the half angles, or half size in metres (view_rays.glsl)
 layout(location = 4) uniform vec2 uViewportSize;
 layout(location = 6) uniform vec3 uLightOrigin;
 layout(binding = 5) uniform sampler2D uImpostorDepths;
@@ -47,7 +47,7 @@ void main() {
     ImpostorSample s = readImpostor(uImpostorDepths, uImpostorMoments, uImpostorMoments, uImpostorMoments, 1, tile, tileTexel(tile, ndc));
     if (!(s.tau > 0.0)) discard;
     vec3 origin, dir;
-    viewRay(ndc, uInverseViewProjection, uView, uParams.x > 0.5, uLightOrigin, origin, dir);
+    viewRay(ndc, uHalfExtent, uView, uParams.x > 0.5, uLightOrigin, origin, dir);
     vec3 axis = -vec3(uView[0][2], uView[1][2], uView[2][2]);
     float cosAxis = uParams.x > 0.5 ? max(dot(dir, axis), 1e-6) : 1.0;
     // How the block's optical depth is spread along the light ray: a Gaussian with the mean and

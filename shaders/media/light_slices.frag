@@ -5,10 +5,11 @@
 #include "common/math.glsl"
 #include "media/optics.glsl"
 #include "media/particle_data.glsl"
+#include "media/view_rays.glsl"
 
 layout(location = 0) uniform mat4 uView;
 layout(location = 2) uniform vec4 uParams;              // x: perspective, y: depth near, z: depth far, w: slices
-layout(location = 3) uniform mat4 uInverseViewProjection;
+layout(location = 3) uniform vec2 uHalfExtent;  // tan of the half angles, or half size in metres (view_rays.glsl)
 layout(location = 4) uniform vec2 uViewportSize;
 layout(location = 6) uniform vec3 uLightOrigin;  // origin-relative light position (perspective views)
 
@@ -19,21 +20,10 @@ layout(location = 0) out vec4 outSlices[8];
 void main() {
     GpuParticle particle = particles[vParticle];
     vec2 ndc = gl_FragCoord.xy / uViewportSize * 2.0 - 1.0;
-    vec4 nearPoint = uInverseViewProjection * vec4(ndc, 1.0, 1.0);  // reversed Z: 1 is the near plane
-    nearPoint /= nearPoint.w;
-    vec3 axis = -vec3(uView[0][2], uView[1][2], uView[2][2]);  // light view −Z in world space
     vec3 origin, dir;
-    float cosAxis;
-    if (uParams.x > 0.5) {
-        origin = uLightOrigin;
-        dir = normalize(nearPoint.xyz - origin);
-        cosAxis = max(dot(dir, axis), 1e-6);
-    } else {
-        float depth = -(uView * vec4(nearPoint.xyz, 1.0)).z;
-        origin = nearPoint.xyz - axis * depth;  // on the view's z = 0 plane, so t equals view depth
-        dir = axis;
-        cosAxis = 1.0;
-    }
+    viewRay(ndc, uHalfExtent, uView, uParams.x > 0.5, uLightOrigin, origin, dir);
+    vec3 axis = -vec3(uView[0][2], uView[1][2], uView[2][2]);  // light view −Z in world space
+    float cosAxis = uParams.x > 0.5 ? max(dot(dir, axis), 1e-6) : 1.0;
     Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, particle.positionRadius.w);
     if (chord.halfChord <= 0.0) discard;
 

@@ -5,6 +5,7 @@
 // transmittance, media/optics.
 #include "common/shadow_views.glsl"
 #include "media/lamp_neighbourhood.glsl"
+#include "media/own_optical_depth.glsl"
 layout(binding = 4) uniform sampler2DArray uShadowDepth;  // the mesh shadow map, read as raw depth
 
 // Light-view depth stored in a shadow map texel (reversed Z), back to metres along the light axis.
@@ -92,15 +93,13 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
 // as v grows and every point sends the same light (3× too dark at the phase peak); a thick
 // particle lit from the side is a half-space whose surface sends μ0/(μ0 + μ) of it. With τl linear
 // in v through its values at the entry and at v̄, the integral is closed-form and exact in both;
-// returns it over 1 − e^−τ, in place of e^−τl(v̄). Only where the slices resolve the particle
-// (mediumOpticalDepthPair): else the change of τl across it is the slices' spread of its own
-// optical depth, and the slope made a spot-lit particle of 8 mm 52% too bright (unseen seed 19,
-// variant 02).
-float layerLightTransmittance(int i, vec3 entry, vec3 p, float vBar, float tau, float radius) {
-    if (!(vBar > 1e-4) || !(tau > 1e-4)) return exp(-mediumOpticalDepth(i, p));
-    vec3 depths = mediumOpticalDepthPair(i, p, entry, radius);
-    float atP = depths.x, a = depths.y;
-    if (depths.z < 0.5) return exp(-atP);
+// returns it over 1 − e^−τ, in place of e^−τl(v̄). τl carries the particle's own optical depth
+// exactly where the slices do not resolve it (particleLightDepth): their spread of it made the
+// slope across a spot-lit particle of 8 mm 52% too bright (unseen stability seed 19, variant 02).
+float layerLightTransmittance(int i, vec3 entry, vec3 p, float vBar, float tau, GpuParticle particle) {
+    float atP = particleLightDepth(i, p, particle);
+    if (!(vBar > 1e-4) || !(tau > 1e-4)) return exp(-atP);
+    float a = particleLightDepth(i, entry, particle);
     float b = max((atP - a) / vBar, -a / tau);  // τl stays ≥ 0 across the layer
     float k = 1.0 + b, kT = k * tau;
     float integral;  // ∫₀^τ e^−(a + b v) e^−v dv
@@ -196,7 +195,7 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
                 // within about the lamp's distance of J.y, not from the whole kernel (R/3 darkened the
                 // medium above a lit floor by up to 25 % around a lamp inside a particle).
                 float visibility = lights[i].spot.z >= 0.0 && !nearLamp ? segmentVisibility(i, origin, dir, c, radius, lo, hi, J.y) : 1.0;
-                float transmittance = nearLamp ? 1.0 : exp(-mediumOpticalDepth(i, origin + dir * (c.tClosest + J.y)));
+                float transmittance = nearLamp ? 1.0 : exp(-particleLightDepth(i, origin + dir * (c.tClosest + J.y), particle));
                 scattered += lights[i].radiance.rgb * (J.x * visibility * transmittance);
                 continue;
             }
@@ -204,9 +203,9 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
 #endif
         float visibility = lights[i].spot.z >= 0.0 ? segmentVisibility(i, origin, dir, c, radius, lo, hi, u) : 1.0;
 #ifdef MEDIA_LAYER_LIGHT
-        float transmittance = layerLightTransmittance(i, entry, p, vBar, tau, radius);
+        float transmittance = layerLightTransmittance(i, entry, p, vBar, tau, particle);
 #else
-        float transmittance = -1.0;  // at p
+        float transmittance = exp(-particleLightDepth(i, p, particle));
 #endif
         scattered += scatteredLight(i, p, dir, particle, visibility, transmittance);
     }

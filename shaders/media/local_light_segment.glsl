@@ -125,7 +125,7 @@ vec2 localLightSegment(vec3 origin, vec3 dir, Chord c, float radius, float lo, f
         if (f[j] <= 0.0) continue;
         f[j] *= exp(-sigma * chordIntegral(c, radius, lo, u));
         f[j] *= phaseValue(particle.extra.x, particle.emissionG.w, normalize(lightPos - x), dir);
-        if (nearLamp) f[j] *= exp(-mediumOpticalDepth(i, x)) * lampMeshVisibility(i, x);
+        if (nearLamp) f[j] *= exp(-particleLightDepth(i, x, particle)) * lampMeshVisibility(i, x);
     }
     float logFactor[LAMP_NODES];
     if (nearLamp) lampOrderCorrection(i, origin, dir, t, layer, logFactor);

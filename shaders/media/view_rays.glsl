@@ -1,16 +1,18 @@
 // Rays of a view (the camera or a light view) through a point of its NDC, relative to the frame
 // origin. Perspective: from the eye. Orthographic: from the view's z = 0 plane along its axis, so
-// the ray parameter equals view depth.
-void viewRay(vec2 ndc, mat4 inverseViewProjection, mat4 view, bool perspective, vec3 eye, out vec3 origin, out vec3 dir) {
-    vec4 nearPoint = inverseViewProjection * vec4(ndc, 1.0, 1.0);  // reversed Z: 1 is the near plane
-    nearPoint /= nearPoint.w;
+// the ray parameter equals view depth. `halfExtent`: the symmetric projection's tan of the half
+// angles (perspective) or half size in metres (orthographic). Built from the view's rotation, not
+// by unprojecting a point of the near plane: a light view's near plane lies 1e-4 of its far
+// distance from the light, and that point's float coordinates turned the ray by up to ~1e-3 rad, so
+// a light-slice texel's ray missed a millimetre particle's core by a fifth of a texel.
+void viewRay(vec2 ndc, vec2 halfExtent, mat4 view, bool perspective, vec3 eye, out vec3 origin, out vec3 dir) {
+    mat3 toWorld = transpose(mat3(view));  // the view's rotation is orthonormal
+    vec2 onPlane = ndc * halfExtent;
     if (perspective) {
         origin = eye;
-        dir = normalize(nearPoint.xyz - eye);
+        dir = normalize(toWorld * vec3(onPlane, -1.0));
     } else {
-        vec3 axis = -vec3(view[0][2], view[1][2], view[2][2]);  // view −Z in world space
-        float depth = -(view * vec4(nearPoint.xyz, 1.0)).z;
-        origin = nearPoint.xyz - axis * depth;
-        dir = axis;
+        origin = toWorld * (vec3(onPlane, 0.0) - view[3].xyz);
+        dir = toWorld * vec3(0.0, 0.0, -1.0);
     }
 }

@@ -176,14 +176,15 @@ void BlockImpostorRenderer::render(const BlockViewPlan& plan, std::size_t tileSe
     particles.bindParticles();
     blocks.bind(tileSet);
     const glm::mat4 projection = plan.view.viewProjection * glm::inverse(plan.view.view);
-    const glm::mat4 inverseViewProjection = glm::inverse(plan.view.viewProjection);
+    // Views are symmetric: their half extent is the projection's scale (media/view_rays.glsl).
+    const glm::vec2 halfExtent(1.0f / projection[0][0], 1.0f / projection[1][1]);
     const glm::vec4 params(plan.view.perspective ? 1.0f : 0.0f, plan.view.nearDepth, 0.0f, 0.0f);
     const glm::vec2 atlas(plan.atlasSize);
     glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(plan.view.view));
     glProgramUniformMatrix4fv(program, 1, 1, GL_FALSE, glm::value_ptr(projection));
     glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
     glProgramUniform2fv(program, 3, 1, glm::value_ptr(atlas));
-    glProgramUniformMatrix4fv(program, 4, 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
+    glProgramUniform2fv(program, 4, 1, glm::value_ptr(halfExtent));
     glProgramUniform3fv(program, 5, 1, glm::value_ptr(plan.view.eye));
     glBindVertexArray(vertexArray_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks.itemCount()));

@@ -29,12 +29,11 @@ void unbindSliceLayers(GLuint framebuffer, const SliceView& view) {
 }
 
 void setSliceViewUniforms(GLuint program, const SliceView& v, int resolution) {
-    const glm::mat4 inverseViewProjection = glm::inverse(v.view.viewProjection);
     const glm::vec4 params(v.view.perspective ? 1.0f : 0.0f, v.view.depthNear, v.view.depthFar, static_cast<float>(v.slices));
     const glm::vec2 size(static_cast<float>(resolution));
     glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, glm::value_ptr(v.view.view));
     glProgramUniform4fv(program, 2, 1, glm::value_ptr(params));
-    glProgramUniformMatrix4fv(program, 3, 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
+    glProgramUniform2fv(program, 3, 1, glm::value_ptr(v.view.halfExtent));
     glProgramUniform2fv(program, 4, 1, glm::value_ptr(size));
     glProgramUniform3fv(program, 6, 1, glm::value_ptr(v.lightOrigin));
 }

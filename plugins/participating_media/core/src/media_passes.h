@@ -25,8 +25,8 @@ void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view);
 // Detaches them again, so the next view's attachment count starts clean.
 void unbindSliceLayers(GLuint framebuffer, const SliceView& view);
 // The uniforms both slice programs read for a view (shaders/media/light_slices.vert,
-// block_slices.vert): 0 view, 2 params (perspective, depth near/far, slices), 3 inverse
-// view-projection, 4 slice resolution, 6 light origin.
+// block_slices.vert): 0 view, 2 params (perspective, depth near/far, slices), 3 half extent
+// (media/view_rays.glsl), 4 slice resolution, 6 light origin.
 void setSliceViewUniforms(GLuint program, const SliceView& view, int resolution);
 
 // Light slices (DESIGN.md §3 light-slice system): every slice view renders all particles once,

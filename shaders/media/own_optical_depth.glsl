@@ -1,0 +1,89 @@
+// A particle's own share of the light slices (common/transmittance.glsl). The slices hold every
+// particle's optical depth at slice planes and texel centres, read linearly between them, so a
+// particle thinner than the slice spacing or a texel shades itself with its own optical depth
+// spread over the slice interval and the texels around it: a millimetre particle of τ 300 beside a
+// spot light took about half of it at its lit skin and went black. Where the slices do not resolve
+// a particle, what they hold of it at p is recomputed as light_slices.frag wrote it, taken out, and
+// its exact optical depth from the light to p put in. Other particles' spread stays: a slice map
+// cannot tell them apart. Needs common/transmittance.glsl and media/optics.glsl.
+
+// The particle's optical depth along a light-view ray from where the ray starts (the light, for a
+// perspective view) up to ray parameter t, integrated as light_slices.frag does.
+float ownDepthUpTo(Chord c, float radius, float sigma, bool fromLight, float t) {
+    if (c.halfChord <= 0.0) return 0.0;
+    float start = fromLight ? max(-c.halfChord, -c.tClosest) : -c.halfChord;
+    return sigma * chordIntegral(c, radius, start, t - c.tClosest);
+}
+
+// The light-view ray through a point `onPlane` of the plane at view depth 1 (perspective: from the
+// light; orthographic: from the view's z = 0 plane, along −z). `stretch`: ray parameter per unit depth.
+Chord lightViewChord(bool perspective, vec2 onPlane, vec3 centre, float radius, out float stretch) {
+    if (perspective) {
+        vec3 d = vec3(onPlane, -1.0);
+        stretch = length(d);
+        return chordOf(vec3(0.0), d / stretch, centre, radius);
+    }
+    stretch = 1.0;
+    return chordOf(vec3(onPlane, 0.0), vec3(0.0, 0.0, -1.0), centre, radius);
+}
+
+// x: what viewOpticalDepth(v, p) holds of the particle (slice planes interpolated, four texels
+// filtered); y: its exact optical depth from the light to p.
+vec2 ownOpticalDepth(GpuLightView v, vec3 p, vec4 positionRadius, float sigma) {
+    vec2 uv;
+    if (!lightViewUv(v, p, uv)) return vec2(0.0);
+    vec3 pView = (v.view * vec4(p, 1.0)).xyz;
+    vec3 centre = (v.view * vec4(positionRadius.xyz, 1.0)).xyz;
+    float radius = positionRadius.w;
+    bool perspective = v.params.x > 0.5;
+    float depth = -pView.z, stretch;
+    Chord toP = lightViewChord(perspective, perspective ? pView.xy / max(depth, 1e-30) : pView.xy, centre, radius, stretch);
+    float exact = ownDepthUpTo(toP, radius, sigma, perspective, depth * stretch);
+
+    int K = int(v.params.w);
+    float spacing = (v.params.z - v.params.y) / float(K);
+    float s = (depth - v.params.y) / spacing;
+    if (s <= 0.0) return vec2(0.0, exact);  // before the first plane the slices hold nothing
+    int k = min(int(floor(s)), K - 1);
+    float f = s >= float(K) ? 1.0 : s - float(k);
+    float nearPlane = v.params.y + float(k) * spacing, farPlane = nearPlane + spacing;
+
+    vec2 size = vec2(textureSize(transmittanceSlices, 0).xy);
+    vec2 texel = uv * size - 0.5;
+    vec2 base = floor(texel), w = texel - base;
+    float smeared = 0.0;
+    for (int j = 0; j < 4; ++j) {
+        vec2 corner = vec2(float(j & 1), float(j >> 1));
+        float weight = mix(1.0 - w.x, w.x, corner.x) * mix(1.0 - w.y, w.y, corner.y);
+        if (!(weight > 0.0)) continue;
+        vec2 ndc = (clamp(base + corner, vec2(0.0), size - 1.0) + 0.5) / size * 2.0 - 1.0;  // clamp to edge
+        Chord c = lightViewChord(perspective, ndc * v.params2.zw, centre, radius, stretch);
+        if (c.halfChord <= 0.0) continue;
+        float lo = k == 0 ? 0.0 : ownDepthUpTo(c, radius, sigma, perspective, nearPlane * stretch);
+        float hi = ownDepthUpTo(c, radius, sigma, perspective, farPlane * stretch);
+        smeared += weight * mix(lo, hi, f);
+    }
+    return vec2(smeared, exact);
+}
+
+// Whether view v's slices resolve a particle of this radius at p: slice planes and texels no
+// farther apart than it is wide.
+bool slicesResolve(GpuLightView v, vec3 p, float radius) {
+    float spacing = (v.params.z - v.params.y) / max(v.params.w, 1.0);
+    float texel = v.params2.y * (v.params.x > 0.5 ? max(-(v.view * vec4(p, 1.0)).z, 0.0) : 1.0);
+    return spacing <= 2.0 * radius && texel <= radius;
+}
+
+// The medium's optical depth towards light i that a point p of `particle` receives: the slices',
+// with the particle's own share made exact where they do not resolve it.
+float particleLightDepth(int i, vec3 p, GpuParticle particle) {
+    if (frame.counts.y == 0) return 0.0;
+    GpuLight L = lights[i];
+    int first = int(L.media.x);
+    if (first < 0) return 0.0;
+    GpuLightView v = transmittanceViews[lightViewIndex(first, int(L.media.y), L.position.xyz, p)];
+    float slices = viewOpticalDepth(v, p);
+    if (slicesResolve(v, p, particle.positionRadius.w)) return slices;
+    vec2 own = ownOpticalDepth(v, p, particle.positionRadius, particle.albedoSigma.w);
+    return max(slices - own.x, 0.0) + own.y;
+}
