@@ -39,6 +39,10 @@ inline constexpr double kReferenceTolerance = 1e-4;
 inline constexpr double kReferenceSelfChangeBound = 1e-3;
 // The default bound on real-time error against the reference.
 inline constexpr double kDefaultErrorBound = 0.15;
+// Where the reference's RMS is this many times its mean luminance, its light lies in about 1% of
+// its pixels or less (RMS / mean ≈ 1/√f for light in a fraction f of them), and the bound applies
+// to RMS(error) / RMS(reference) instead of rel-RMSE (boundedError says why).
+inline constexpr double kSparseImageRatio = 10.0;
 
 struct HardCase {
     std::string name;                   // for messages, the printed line and dumped files
@@ -53,6 +57,7 @@ struct ModeRun {
     media::MediaMode mode = media::MediaMode::Particles;
     assets::RgbImage image;              // the first frame
     media::reference::ImageMetrics error;  // first frame against the reference
+    double rmsRelativeError = 0.0;       // RMS(first frame − reference) / RMS(reference)
     std::size_t nonfinite = 0;           // non-finite pixels of the first frame
     double repeatChange = 0.0;           // rel-RMSE of the second frame against the first
     std::size_t repeatNonfinite = 0;
@@ -64,6 +69,7 @@ struct CaseRun {
     assets::RgbImage reference;
     std::size_t referenceNonfinite = 0;
     double referenceSelfChange = 0.0;    // RMS(half-tolerance image − first) / RMS(first)
+    double referenceSparsity = 0.0;      // RMS(reference) / its mean luminance (see kSparseImageRatio)
     std::size_t referenceHalfNonfinite = 0;
     std::size_t particleCount = 0;       // what both renderers drew
     ModeRun particles, blocks;
@@ -78,6 +84,16 @@ std::size_t countNonfinite(const assets::RgbImage& image);
 
 // RMS(a − b) / RMS(b) over all channels (0 when both are identical, +inf when b is 0 and a is not).
 double relativeRmsChange(const assets::RgbImage& a, const assets::RgbImage& b);
+
+// RMS over all channels / mean Rec.709 luminance (0 for a black image).
+double sparsity(const assets::RgbImage& image);
+
+// The error a mode's bound applies to: its rel-RMSE against the reference, except where the
+// reference is sparse (kSparseImageRatio): there rel-RMSE, whose denominator is the mean
+// luminance, reads a relative error e of the few lit pixels as e·RMS/mean (one lit pixel of
+// 160×90: 120·e, so a 0.2% error fails 15%), and RMS(error) / RMS(reference) reads it as e. The
+// harness measures the reference's own convergence that way for the same reason.
+double boundedError(const CaseRun& run, media::MediaMode mode);
 
 // The reference of a session's current state at width×height through `camera`.
 assets::RgbImage renderReference(sandbox::Session& session, const std::string& camera, int width, int height,
