@@ -66,7 +66,7 @@ void main() {
     // The exact cut walks the block's particles; the build without it (block_composite_pass.cpp
     // draws with it only the blocks a mesh comes near) keeps the profile's cut for safety.
 #ifdef BLOCK_EXACT_CUT
-    ivec2 items = ivec2(tile.instance.zw);
+    ivec2 items = ivec2(tile.instance.zw);  // (count 0: an instance, whose particles are not listed)
     float share = cut ? listedMassBefore(items, origin, dir, tSurface) : 1.0;
     if (share < 0.0) share = profileMassBefore(profile, tSurface);
 #else
@@ -97,6 +97,6 @@ void main() {
         profile.listed = items;
     }
 #endif
-    vec3 source = blockSegmentSource(origin, dir, profile, tails, tau, block, layer);
+    vec3 source = blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer);
     outColor = vec4(source * alpha, alpha);
 }

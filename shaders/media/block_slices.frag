@@ -6,6 +6,7 @@
 #include "common/math.glsl"
 #include "media/optics.glsl"
 #include "media/block_data.glsl"
+#include "media/block_light_profile.glsl"
 #include "media/view_rays.glsl"
 
 layout(location = 0) uniform mat4 uView;
@@ -17,27 +18,6 @@ layout(binding = 5) uniform sampler2D uImpostorDepths;
 layout(binding = 6) uniform sampler2D uImpostorMoments;
 
 flat in int vBlock;
-
-// The normal (μ, s) whose part beyond `lo` has the given mean and deviation. The impostor's moments
-// are those of the mass on the ray, which starts at lo (a lamp's position); a normal with the same
-// moments, cut there, puts too little mass near lo: 41% of the true density at a lamp in a
-// particle's centre. The cut normal's deviation / (mean − lo) depends on α = (lo − μ)/s alone and
-// grows with it (0.17 at α = −6, 0.76 at 0, 0.94 at 3), so α is found by bisection.
-vec2 normalCutAt(float lo, float mean, float deviation) {
-    float above = mean - lo;
-    if (!(above > 0.0)) return vec2(mean, deviation);
-    float ratio = deviation / above;
-    if (ratio <= 0.1667) return vec2(mean, deviation);  // α < −6: the cut holds no mass
-    float a0 = -6.0, a1 = 3.0;
-    for (int k = 0; k < 20; ++k) {
-        float alpha = 0.5 * (a0 + a1), l = inverseMillsRatio(alpha);
-        if (sqrt(max(1.0 + alpha * l - l * l, 0.0)) / (l - alpha) < ratio) a0 = alpha;
-        else a1 = alpha;
-    }
-    float alpha = 0.5 * (a0 + a1);
-    float s = above / (inverseMillsRatio(alpha) - alpha);
-    return vec2(lo - alpha * s, s);
-}
 
 layout(location = 0) out vec4 outSlices[8];
 
@@ -56,24 +36,13 @@ void main() {
     float mean = s.sums1.x / s.tau;  // about tileMomentOrigin, which puts an instance where it is
     float deviation = sqrt(max(s.sums1.y / s.tau - mean * mean, 0.0));
     mean += tileMomentOrigin(tile, uView, uParams.x > 0.5, uLightOrigin);
-    if (uParams.x > 0.5 && deviation > 1e-6) {
-        vec2 cut = normalCutAt(0.0, mean, deviation);
-        mean = cut.x;
-        deviation = cut.y;
-    }
-    // No mass lies behind the ray's start (a lamp inside the medium): the Gaussian is cut there, or
-    // a single particle around a spot light put a sixth of its τ 50 behind the lamp and darkened
-    // everything it lit by 10-25%.
-    float scale = deviation > 1e-6 ? 1.0 / (deviation * 1.41421356) : 0.0;
-    float behind = deviation > 1e-6 ? erfApprox(-mean * scale) : -1.0;
+    BlockLightProfile profile = blockLightProfile(mean, deviation, uParams.x > 0.5);
     int slices = int(uParams.w);
     float spacing = (uParams.z - uParams.y) / uParams.w;
     vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     for (int k = 0; k < slices; ++k) {
         float t = (uParams.y + float(k + 1) * spacing) / cosAxis;
-        float fraction = deviation > 1e-6 ? max(erfApprox((t - mean) * scale) - behind, 0.0) / max(1.0 - behind, 1e-6)
-                                          : (t >= mean ? 1.0 : 0.0);
-        values[k / 4][k - 4 * (k / 4)] = s.tau * fraction;
+        values[k / 4][k - 4 * (k / 4)] = s.tau * blockLightShare(profile, t);
     }
     for (int a = 0; a < 8; ++a) outSlices[a] = values[a];
 }

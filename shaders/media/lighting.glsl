@@ -86,6 +86,19 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
     return phase * s.irradiance * (visibility * transmittance);
 }
 
+// ∫₀^τ e^−τl(v) e^−v dv / (1 − e^−τ) for τl linear in v through `entry` at v = 0 and `atShading`
+// at v = vBar (see layerLightTransmittance), kept ≥ 0 across the layer.
+float layerTransmittance(float entry, float atShading, float vBar, float tau) {
+    float a = entry;
+    float b = max((atShading - a) / vBar, -a / tau);  // τl stays ≥ 0 across the layer
+    float k = 1.0 + b, kT = k * tau;
+    float integral;  // ∫₀^τ e^−(a + b v) e^−v dv
+    if (abs(kT) < 1e-3) integral = exp(-a) * tau * (1.0 - kT * (0.5 - kT / 6.0));
+    else if (k > 0.0) integral = exp(-a) * oneMinusExpNeg(kT) / k;
+    else integral = exp(-(a + kT)) * oneMinusExpNeg(-kT) / -k;  // a + kT = τl at the back + τ ≥ 0
+    return integral / oneMinusExpNeg(tau);
+}
+
 // The medium's transmittance towards light i as a whole layer receives it. The layer adds
 // ∫₀^τ J(v) e^−v dv (v: its optical depth from `entry`, where the ray enters it), and J carries
 // e^−τl(v), τl the light's optical depth; one e^−τl at the shading point v̄ (Jensen's gap) missed
@@ -99,14 +112,7 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
 float layerLightTransmittance(int i, vec3 entry, vec3 p, float vBar, float tau, GpuParticle particle) {
     float atP = particleLightDepth(i, p, particle);
     if (!(vBar > 1e-4) || !(tau > 1e-4)) return exp(-atP);
-    float a = particleLightDepth(i, entry, particle);
-    float b = max((atP - a) / vBar, -a / tau);  // τl stays ≥ 0 across the layer
-    float k = 1.0 + b, kT = k * tau;
-    float integral;  // ∫₀^τ e^−(a + b v) e^−v dv
-    if (abs(kT) < 1e-3) integral = exp(-a) * tau * (1.0 - kT * (0.5 - kT / 6.0));
-    else if (k > 0.0) integral = exp(-a) * oneMinusExpNeg(kT) / k;
-    else integral = exp(-(a + kT)) * oneMinusExpNeg(-kT) / -k;  // a + kT = τl at the back + τ ≥ 0
-    return integral / oneMinusExpNeg(tau);
+    return layerTransmittance(particleLightDepth(i, entry, particle), atP, vBar, tau);
 }
 
 // Where a mesh shadow boundary crosses the ray between t0 and t1: taps at both ends and at t; where

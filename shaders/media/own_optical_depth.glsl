@@ -5,7 +5,8 @@
 // spot light took about half of it at its lit skin and went black. Where the slices do not resolve
 // a particle, what they hold of it at p is recomputed as light_slices.frag wrote it, taken out, and
 // its exact optical depth from the light to p put in. Other particles' spread stays: a slice map
-// cannot tell them apart. Needs common/transmittance.glsl and media/optics.glsl.
+// cannot tell them apart. Blocks do the same with a block's particles
+// (block_own_optical_depth.glsl). Needs common/transmittance.glsl and media/optics.glsl.
 
 // The particle's optical depth along a light-view ray from where the ray starts (the light, for a
 // perspective view) up to ray parameter t, integrated as light_slices.frag does.
@@ -27,41 +28,71 @@ Chord lightViewChord(bool perspective, vec2 onPlane, vec3 centre, float radius, 
     return chordOf(vec3(onPlane, 0.0), vec3(0.0, 0.0, -1.0), centre, radius);
 }
 
-// x: what viewOpticalDepth(v, p) holds of the particle (slice planes interpolated, four texels
-// filtered); y: its exact optical depth from the light to p.
-vec2 ownOpticalDepth(GpuLightView v, vec3 p, vec4 positionRadius, float sigma) {
-    vec2 uv;
-    if (!lightViewUv(v, p, uv)) return vec2(0.0);
-    vec3 pView = (v.view * vec4(p, 1.0)).xyz;
-    vec3 centre = (v.view * vec4(positionRadius.xyz, 1.0)).xyz;
-    float radius = positionRadius.w;
-    bool perspective = v.params.x > 0.5;
-    float depth = -pView.z, stretch;
-    Chord toP = lightViewChord(perspective, perspective ? pView.xy / max(depth, 1e-30) : pView.xy, centre, radius, stretch);
-    float exact = ownDepthUpTo(toP, radius, sigma, perspective, depth * stretch);
+// What viewOpticalDepth(v, p) reads: the slice interval around p's depth and the four texels of
+// its bilinear filter, each with its weight and its ray (a point of the plane at depth 1).
+struct SliceRead {
+    bool inView;       // false: p lies outside the view, where the slices hold nothing of any particle
+    bool holds;        // false: outside the view or before the first plane, where the slices hold zero
+    bool perspective;
+    vec3 pView;        // p in light view space
+    float depth;       // p's view depth
+    bool firstSlice;   // the interval starts at the first plane, which holds zero
+    float f;           // where p lies in the interval
+    float nearPlane;   // the interval's planes (view depth)
+    float farPlane;
+    vec2 onPlane[4];
+    float weight[4];
+};
 
+SliceRead sliceRead(GpuLightView v, vec3 p) {
+    SliceRead r;
+    r.perspective = v.params.x > 0.5;
+    r.pView = (v.view * vec4(p, 1.0)).xyz;
+    r.depth = -r.pView.z;
+    vec2 uv;
     int K = int(v.params.w);
     float spacing = (v.params.z - v.params.y) / float(K);
-    float s = (depth - v.params.y) / spacing;
-    if (s <= 0.0) return vec2(0.0, exact);  // before the first plane the slices hold nothing
-    int k = min(int(floor(s)), K - 1);
-    float f = s >= float(K) ? 1.0 : s - float(k);
-    float nearPlane = v.params.y + float(k) * spacing, farPlane = nearPlane + spacing;
-
+    float s = (r.depth - v.params.y) / spacing;
+    r.inView = lightViewUv(v, p, uv);
+    r.holds = r.inView && s > 0.0;
+    int k = min(int(floor(max(s, 0.0))), K - 1);
+    r.firstSlice = k == 0;
+    r.f = s >= float(K) ? 1.0 : s - float(k);
+    r.nearPlane = v.params.y + float(k) * spacing;
+    r.farPlane = r.nearPlane + spacing;
     vec2 size = vec2(textureSize(transmittanceSlices, 0).xy);
     vec2 texel = uv * size - 0.5;
     vec2 base = floor(texel), w = texel - base;
-    float smeared = 0.0;
     for (int j = 0; j < 4; ++j) {
         vec2 corner = vec2(float(j & 1), float(j >> 1));
-        float weight = mix(1.0 - w.x, w.x, corner.x) * mix(1.0 - w.y, w.y, corner.y);
-        if (!(weight > 0.0)) continue;
+        r.weight[j] = mix(1.0 - w.x, w.x, corner.x) * mix(1.0 - w.y, w.y, corner.y);
         vec2 ndc = (clamp(base + corner, vec2(0.0), size - 1.0) + 0.5) / size * 2.0 - 1.0;  // clamp to edge
-        Chord c = lightViewChord(perspective, ndc * v.params2.zw, centre, radius, stretch);
+        r.onPlane[j] = ndc * v.params2.zw;
+    }
+    return r;
+}
+
+// The light-view ray through p, as a point of the plane at depth 1 (lightViewChord).
+vec2 sliceReadOwnRay(SliceRead r) { return r.perspective ? r.pView.xy / max(r.depth, 1e-30) : r.pView.xy; }
+
+// x: what viewOpticalDepth(v, p) holds of the particle (slice planes interpolated, four texels
+// filtered); y: its exact optical depth from the light to p.
+vec2 ownOpticalDepth(GpuLightView v, vec3 p, vec4 positionRadius, float sigma) {
+    SliceRead r = sliceRead(v, p);
+    if (!r.inView) return vec2(0.0);
+    vec3 centre = (v.view * vec4(positionRadius.xyz, 1.0)).xyz;
+    float radius = positionRadius.w, stretch;
+    Chord toP = lightViewChord(r.perspective, sliceReadOwnRay(r), centre, radius, stretch);
+    float exact = ownDepthUpTo(toP, radius, sigma, r.perspective, r.depth * stretch);
+    if (!r.holds) return vec2(0.0, exact);
+    float smeared = 0.0;
+    for (int j = 0; j < 4; ++j) {
+        if (!(r.weight[j] > 0.0)) continue;
+        Chord c = lightViewChord(r.perspective, r.onPlane[j], centre, radius, stretch);
         if (c.halfChord <= 0.0) continue;
-        float lo = k == 0 ? 0.0 : ownDepthUpTo(c, radius, sigma, perspective, nearPlane * stretch);
-        float hi = ownDepthUpTo(c, radius, sigma, perspective, farPlane * stretch);
-        smeared += weight * mix(lo, hi, f);
+        float lo = r.firstSlice ? 0.0 : ownDepthUpTo(c, radius, sigma, r.perspective, r.nearPlane * stretch);
+        float hi = ownDepthUpTo(c, radius, sigma, r.perspective, r.farPlane * stretch);
+        smeared += r.weight[j] * mix(lo, hi, r.f);
     }
     return vec2(smeared, exact);
 }
@@ -74,14 +105,20 @@ bool slicesResolve(GpuLightView v, vec3 p, float radius) {
     return spacing <= 2.0 * radius && texel <= radius;
 }
 
+// The light view of light i whose slices hold p, or −1 where the light has none.
+int lightSliceView(int i, vec3 p) {
+    if (frame.counts.y == 0) return -1;
+    GpuLight L = lights[i];
+    int first = int(L.media.x);
+    return first < 0 ? -1 : lightViewIndex(first, int(L.media.y), L.position.xyz, p);
+}
+
 // The medium's optical depth towards light i that a point p of `particle` receives: the slices',
 // with the particle's own share made exact where they do not resolve it.
 float particleLightDepth(int i, vec3 p, GpuParticle particle) {
-    if (frame.counts.y == 0) return 0.0;
-    GpuLight L = lights[i];
-    int first = int(L.media.x);
-    if (first < 0) return 0.0;
-    GpuLightView v = transmittanceViews[lightViewIndex(first, int(L.media.y), L.position.xyz, p)];
+    int view = lightSliceView(i, p);
+    if (view < 0) return 0.0;
+    GpuLightView v = transmittanceViews[view];
     float slices = viewOpticalDepth(v, p);
     if (slicesResolve(v, p, particle.positionRadius.w)) return slices;
     vec2 own = ownOpticalDepth(v, p, particle.positionRadius, particle.albedoSigma.w);

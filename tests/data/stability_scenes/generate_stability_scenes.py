@@ -309,6 +309,17 @@ def inside_towards_sun():
     return b
 
 
+def spot_beside_opaque_specks():
+    """Unseen variant 2 of seed 11: 2000 particles of 4–8 mm and optical depth ~1e4 each around a
+    spot light, g = −0.5, on black with a faint ambient. The slices are 4 cm apart and wider than a
+    particle per texel, so a particle's own optical depth spread over them shadowed its own lit
+    side: the two or three lit pixels beside the spot were black in both modes."""
+    rng = random.Random(11)
+    for index in range(3):
+        _, b = unseen_variant(rng, index)
+    return b
+
+
 HARD_CASES = {
     "optical_depth_1e4": optical_depth_1e4,
     "optical_depth_1e-5": optical_depth_1e_5,
@@ -319,6 +330,7 @@ HARD_CASES = {
     "spot_near_ray": spot_near_ray,
     "spot_in_opaque_cloud": spot_in_opaque_cloud,
     "inside_towards_sun": inside_towards_sun,
+    "spot_beside_opaque_specks": spot_beside_opaque_specks,
     "far_from_origin": lambda: far_from_origin((1.0e5, 1.0e5, -1.0e5)),
     "far_from_origin_at_origin": lambda: far_from_origin((0.0, 0.0, 0.0)),
     "zero_particles": zero_particles,

@@ -1,5 +1,7 @@
-// Tests plugins/participating_media/core/src/block_composite_pass.cpp blocksNearMeshes: which blocks
-// are composited with the exact cut through their own particles (a mesh may pass among them).
+// Tests plugins/participating_media/core/src/block_composite_pass.cpp: which blocks are composited
+// with the exact cut through their own particles (blocksNearMeshes: a mesh may pass among them),
+// and which are shaded from their own particles (blocksOfUnresolvedParticles: the light slices do
+// not resolve them).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -60,6 +62,37 @@ TEST(BlocksNearMeshes, NoMeshesNoExactCut) {
     BlockPartition partition;
     partition.blocks.push_back(blockAt(glm::dvec3(0.0), 1.0, 0.5f));
     EXPECT_EQ(blocksNearMeshes(partition, {}), std::vector<std::uint8_t>{0});
+}
+
+// An orthographic light view looking down −Z from z = 0: slices between depths 0 and 8, 256 texels
+// over 8 m (3.1 cm per texel).
+render::GpuLightView sunView(float slices) {
+    render::LightView view;
+    view.depthNear = 0.0f;
+    view.depthFar = 8.0f;
+    view.halfExtent = glm::vec2(4.0f);
+    return render::packLightView(view, 0, slices, 256.0f);
+}
+
+TEST(BlocksOfUnresolvedParticles, ParticlesThinnerThanTheSliceSpacingOrATexel) {
+    BlockPartition partition;
+    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.2f));     // 25 cm planes, 3.1 cm texels: resolved
+    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.1f));     // planes 25 cm apart, 20 cm wide: not
+    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.006f));   // 6 mm: neither planes nor texels
+    Block many = blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.006f);
+    many.count = kMaxOwnShadedBlockParticles + 1;  // too many to walk per texel ray
+    partition.blocks.push_back(many);
+    const std::vector<std::uint8_t> own = blocksOfUnresolvedParticles(partition, {sunView(32.0f)}, glm::dvec3(0.0));
+    EXPECT_EQ(own, (std::vector<std::uint8_t>{0, 1, 1, 0}));
+    EXPECT_EQ(blocksOfUnresolvedParticles(partition, {}, glm::dvec3(0.0)), (std::vector<std::uint8_t>{0, 0, 0, 0})) << "no light views";
+}
+
+TEST(BlocksOfUnresolvedParticles, AnyViewThatDoesNotResolveThemDecides) {
+    BlockPartition partition;
+    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.2f));
+    EXPECT_EQ(blocksOfUnresolvedParticles(partition, {sunView(32.0f)}, glm::dvec3(0.0)), std::vector<std::uint8_t>{0});
+    EXPECT_EQ(blocksOfUnresolvedParticles(partition, {sunView(32.0f), sunView(4.0f)}, glm::dvec3(0.0)), std::vector<std::uint8_t>{1})
+        << "4 slices over 8 m are 2 m apart";
 }
 
 }  // namespace

@@ -84,12 +84,43 @@ std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, cons
     return near;
 }
 
-BlockCompositePass::BlockCompositePass()
-    : programs_({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"}),
-      exactCutPrograms_({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag", .defines = {"BLOCK_EXACT_CUT"}}) {}
+std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& partition, const std::vector<render::GpuLightView>& views,
+                                                       const glm::dvec3& origin) {
+    std::vector<std::uint8_t> unresolved(partition.blocks.size(), 0);
+    for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
+        const Block& block = partition.blocks[b];
+        if (block.count == 0 || block.count > kMaxOwnShadedBlockParticles) continue;
+        const double radius = block.meanParticleRadius;
+        const glm::dvec3 centre = block.centre - origin;
+        for (const render::GpuLightView& v : views) {
+            // As own_optical_depth.glsl slicesResolve decides it per shading point.
+            const double spacing = (static_cast<double>(v.params.z) - v.params.y) / std::max(static_cast<double>(v.params.w), 1.0);
+            const double depth = -(glm::dmat4(v.view) * glm::dvec4(centre, 1.0)).z;
+            const double texel = v.params2.y * (v.params.x > 0.5f ? std::max(depth, 0.0) : 1.0);
+            if (spacing > 2.0 * radius || texel > radius) {
+                unresolved[b] = 1;
+                break;
+            }
+        }
+    }
+    return unresolved;
+}
+
+BlockCompositePass::BlockCompositePass() { programs(kBlockPlain); }
+
+LocalLightPrograms& BlockCompositePass::programs(std::uint8_t build) {
+    std::unique_ptr<LocalLightPrograms>& programs = programs_[build & 3];
+    if (!programs) {
+        gpu::ProgramDesc desc{.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"};
+        if (build & kBlockExactCut) desc.defines.push_back("BLOCK_EXACT_CUT");
+        if (build & kBlockOwnParticles) desc.defines.push_back("BLOCK_OWN_PARTICLES");
+        programs = std::make_unique<LocalLightPrograms>(std::move(desc));
+    }
+    return *programs;
+}
 
 render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
-                                               const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& exactCut,
+                                               const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
                                                const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                                const BlockImpostorRenderer& impostors, const MediaTarget& target) {
     struct Impostors {
@@ -114,18 +145,20 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
         render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments;
     };
     const int w = target.size.x, h = target.size.y;
-    const gpu::Program& plain = programs_.forLights(context.input.lights);
-    const gpu::Program& withCut = exactCutPrograms_.forLights(context.input.lights);
-    // Runs of consecutive ranks that want the same build, drawn in order: (first rank, count, exact cut).
+    // Runs of consecutive ranks that want the same build, drawn in order.
     struct Run {
         GLint first;
         GLsizei count;
-        bool cut;
+        const gpu::Program* program;
     };
     std::vector<Run> runs;
+    std::uint8_t runBuild = 0;
     for (std::size_t r = 0; r < backToFront.size(); ++r) {
-        const bool cut = exactCut[backToFront[r]] != 0;
-        if (runs.empty() || runs.back().cut != cut) runs.push_back({static_cast<GLint>(r), 0, cut});
+        const std::uint8_t build = builds[backToFront[r]] & 3;
+        if (runs.empty() || build != runBuild) {
+            runs.push_back({static_cast<GLint>(r), 0, &programs(build).forLights(context.input.lights)});
+            runBuild = build;
+        }
         ++runs.back().count;
     }
     const auto& data = graph.addPass<Composite>(
@@ -140,8 +173,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.sums2 = builder.read(made.sums2);
             d.moments = builder.read(made.moments);
         },
-        [this, &plain, &withCut, runs, &context, &blocks, &particles, w, h, scale = target.fullResScale](const render::PassResources& r,
-                                                                                                       const Composite& d) {
+        [this, runs, &context, &blocks, &particles, w, h, scale = target.fullResScale](const render::PassResources& r, const Composite& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
             glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
@@ -149,7 +181,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glViewport(0, 0, w, h);
             const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
-            for (const gpu::Program* program : {&plain, &withCut}) glProgramUniform2f(program->id(), 1, scale.x, scale.y);
+            for (const Run& run : runs) glProgramUniform2f(run.program->id(), 1, scale.x, scale.y);
             context.frameData->bind();
             blocks.bind(0);
             particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
@@ -168,7 +200,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
             glBindVertexArray(vertexArray_.id());
             for (const Run& run : runs) {
-                const GLuint program = (run.cut ? withCut : plain).id();
+                const GLuint program = run.program->id();
                 glUseProgram(program);
                 glProgramUniform1i(program, kFirstRankLocation, run.first);
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, run.count);

@@ -2,6 +2,7 @@
 // Blocks mode (seed 000): per-frame block data on the GPU and the three passes that use it —
 // impostors (for the camera and for each light view), the camera composite, and the light slices.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "media_passes.h"
@@ -102,18 +103,41 @@ std::vector<MeshBox> meshInstanceBoxes(const render::FrameInput& input);
 // not (cumulus.gltf at 1280×720, where no mesh comes near: 925 ms → 762 ms without it).
 std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, const std::vector<MeshBox>& meshes);
 
+// Blocks of at most this many particles may be shaded from their own particles (below).
+inline constexpr std::uint32_t kMaxOwnShadedBlockParticles = 64;  // block_own_optical_depth.glsl walks them per texel ray
+
+// Per block (1/0): whether it is shaded from its own particles (BLOCK_OWN_PARTICLES,
+// shaders/media/block_own_optical_depth.glsl): it has at most kMaxOwnShadedBlockParticles, and a
+// light view's slices do not resolve particles of its mean radius at its centre (slice planes
+// farther apart than such a particle is wide, or texels wider than its radius). Such a block is
+// lumps, not the smooth medium its depth profile stands for. `views`: the frame's transmittance
+// views (origin-relative, as packed for the shaders); `origin`: the frame origin. llvmpipe runs
+// that code in every pixel of a draw, taken or not (cumulus.gltf 640×360: the composite pass
+// 940 → 1440 ms), so only these blocks are drawn with it.
+std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& partition, const std::vector<render::GpuLightView>& views,
+                                                       const glm::dvec3& origin);
+
+// The composite build a block is drawn with: which of the two optional parts it needs.
+enum BlockCompositeBuild : std::uint8_t {
+    kBlockPlain = 0,
+    kBlockExactCut = 1,       // BLOCK_EXACT_CUT: a mesh comes near (blocksNearMeshes)
+    kBlockOwnParticles = 2,   // BLOCK_OWN_PARTICLES: lumps the slices do not resolve (blocksOfUnresolvedParticles)
+};
+
 // Camera: impostors into an atlas, then blocks composited back to front into the media target.
 class BlockCompositePass {
 public:
     BlockCompositePass();
-    // The camera's plan is tile set 0 of `blocks`.
+    // The camera's plan is tile set 0 of `blocks`; `builds`: each block's BlockCompositeBuild bits.
     render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
-                               const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& exactCut,
+                               const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
                                const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                const BlockImpostorRenderer& impostors, const MediaTarget& target);
 
 private:
-    LocalLightPrograms programs_, exactCutPrograms_;  // without and with BLOCK_EXACT_CUT
+    LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for
+
+    std::unique_ptr<LocalLightPrograms> programs_[4];  // by BlockCompositeBuild bits
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

@@ -185,8 +185,12 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
                          [&](std::uint32_t a, std::uint32_t b) { return keys[a] > keys[b]; });
         if (!impostorRenderer_) impostorRenderer_ = std::make_unique<BlockImpostorRenderer>();
         if (!blockCompositePass_) blockCompositePass_ = std::make_unique<BlockCompositePass>();
-        const std::vector<std::uint8_t> exactCut = blocksNearMeshes(frame.partition, meshInstanceBoxes(context.input));
-        media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, exactCut, *blockBuffers_, *buffer_,
+        std::vector<std::uint8_t> builds = blocksNearMeshes(frame.partition, meshInstanceBoxes(context.input));
+        if (!frame.instanced) {  // an instance's particles are not listed
+            const std::vector<std::uint8_t> own = blocksOfUnresolvedParticles(frame.partition, context.transmittance.views, v.origin);
+            for (std::size_t b = 0; b < builds.size(); ++b) builds[b] = static_cast<std::uint8_t>(builds[b] | (own[b] ? kBlockOwnParticles : 0));
+        }
+        media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, builds, *blockBuffers_, *buffer_,
                                          *impostorRenderer_, target);
     } else {
         if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
