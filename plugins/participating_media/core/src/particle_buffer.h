@@ -20,11 +20,21 @@ struct alignas(16) GpuParticle {
     glm::vec4 extra;  // x: phase (0 HG, 1 Rayleigh)
 };
 
+// How far in front of its centre, along a ray through it, a particle's seen light lies: where its
+// own optical depth from the ray's entry reaches the e^−v-weighted mean v̄ (shaders/media/optics.glsl
+// shadingDepthFraction), for a ray through the centre of a particle of radius R and peak
+// extinction σ. 0 for a thin particle (v̄ = τ/2: the centre), towards R for a dense one (its front).
+// Sorting by centres put a dense particle whose front lies far in front of another's behind it: on
+// a cloud top of overlapping 60–120 m particles seen along the sun, every layer then lay behind
+// another's dense tail and the lit top came out at the ambient (fresh stability seed 25 variant 04).
+double visibleDepthOffset(double sigma, double radius);
+
 class ParticleGpuBuffer {
 public:
     // Rewrites the instance buffer (grows it when needed; never shrinks, so steady frames allocate nothing).
     void upload(const ParticleSet& particles, const glm::dvec3& origin);
-    // Sorts by distance from the eye, farthest first, and uploads the order.
+    // Sorts by the distance from the eye to where each particle's light is seen (visibleDepthOffset
+    // in front of its centre), farthest first, and uploads the order.
     void sortBackToFront(const ParticleSet& particles, const render::View& view);
 
     // After sorting: the particles around each point/spot light, with their draw ranks (particles mode).
