@@ -67,15 +67,16 @@ vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre) {
 }
 
 // The medium's optical depth towards light i at a point p of a block (its listed particles
-// `items`, their mean radius `meanRadius`): the slices', with the block's own share made exact
-// where they do not resolve its particles (the BLOCK_OWN_PARTICLES build: else the slices').
-float blockLightDepth(int i, vec3 p, ivec2 items, vec3 centre, float meanRadius) {
+// `items`): the slices', with the block's own share made exact in the BLOCK_OWN_PARTICLES build,
+// drawn for the blocks whose particles some view's slices do not resolve (in a view that does, the
+// correction changes little and costs the same).
+float blockLightDepth(int i, vec3 p, ivec2 items, vec3 centre) {
     if (!kOwnParticles) return mediumOpticalDepth(i, p);
     int view = lightSliceView(i, p);
     if (view < 0) return 0.0;
     GpuLightView v = transmittanceViews[view];
     float slices = viewOpticalDepth(v, p);
-    if (items.y <= 0 || slicesResolve(v, p, meanRadius)) return slices;
+    if (items.y <= 0) return slices;
     vec2 own = ownBlockOpticalDepth(v, p, items, centre);
     return max(slices - own.x, 0.0) + own.y;
 }

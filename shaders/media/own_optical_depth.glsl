@@ -97,12 +97,16 @@ vec2 ownOpticalDepth(GpuLightView v, vec3 p, vec4 positionRadius, float sigma) {
     return vec2(smeared, exact);
 }
 
-// Whether view v's slices resolve a particle of this radius at p: slice planes and texels no
-// farther apart than it is wide.
-bool slicesResolve(GpuLightView v, vec3 p, float radius) {
+// Whether view v's slices resolve a particle of this radius and peak extinction at p: slice planes
+// and texels no farther apart than it is wide, and neither holding more than an optical depth of 2
+// of it. Read linearly between planes, a dense particle's own τ rises across its lit skin as a
+// chord over a cliff: one particle of τ 1e4 and R 0.7 m seen along the sun (g = −0.99, its glory
+// 690) gave 18 with planes 4 cm apart (fresh stability seed 23 variant 04; 0.03% with this).
+// block_composite_pass.cpp blocksOfUnresolvedParticles decides the same for blocks.
+bool slicesResolve(GpuLightView v, vec3 p, float radius, float sigma) {
     float spacing = (v.params.z - v.params.y) / max(v.params.w, 1.0);
     float texel = v.params2.y * (v.params.x > 0.5 ? max(-(v.view * vec4(p, 1.0)).z, 0.0) : 1.0);
-    return spacing <= 2.0 * radius && texel <= radius;
+    return spacing <= 2.0 * radius && texel <= radius && sigma * max(spacing, texel) <= 2.0;
 }
 
 // The light view of light i whose slices hold p, or −1 where the light has none.
@@ -120,7 +124,7 @@ float particleLightDepth(int i, vec3 p, GpuParticle particle) {
     if (view < 0) return 0.0;
     GpuLightView v = transmittanceViews[view];
     float slices = viewOpticalDepth(v, p);
-    if (slicesResolve(v, p, particle.positionRadius.w)) return slices;
+    if (slicesResolve(v, p, particle.positionRadius.w, particle.albedoSigma.w)) return slices;
     vec2 own = ownOpticalDepth(v, p, particle.positionRadius, particle.albedoSigma.w);
     return max(slices - own.x, 0.0) + own.y;
 }

@@ -39,10 +39,13 @@ inline constexpr double kReferenceTolerance = 1e-4;
 inline constexpr double kReferenceSelfChangeBound = 1e-3;
 // The default bound on real-time error against the reference.
 inline constexpr double kDefaultErrorBound = 0.15;
-// Where the reference's RMS is this many times its mean luminance, its light lies in about 1% of
-// its pixels or less (RMS / mean ≈ 1/√f for light in a fraction f of them), and the bound applies
-// to RMS(error) / RMS(reference) instead of rel-RMSE (boundedError says why).
-inline constexpr double kSparseImageRatio = 10.0;
+// Where the reference's RMS is this many times its mean luminance, its light lies in a few of its
+// pixels (RMS / mean ≈ 1/√f for light in a fraction f of them: 5 is 4%), and rel-RMSE reads a
+// relative error e of those pixels as about 5e, so 3% there already meets the 15% bound. The
+// bound then applies to RMS(error) / RMS(reference) instead (boundedError). A glory seen along
+// the sun (g = −0.99) is 2–3% off at its peak in both modes and read 11.5% and 27% at a ratio of
+// 9.9 (fresh stability seed 26 variant 08).
+inline constexpr double kSparseImageRatio = 5.0;
 
 struct HardCase {
     std::string name;                   // for messages, the printed line and dumped files

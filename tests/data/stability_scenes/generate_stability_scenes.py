@@ -320,6 +320,28 @@ def spot_beside_opaque_specks():
     return b
 
 
+def glory_of_dense_particle():
+    """Unseen variant 4 of seed 23: one particle of optical depth 1e4 and radius 0.7 m over the ground,
+    seen straight down along the sun, g = −0.99: its glory (the backscatter peak, ~690) is the image.
+    The slices' planes 4 cm apart each held thousands of its optical depth, read linearly across its
+    lit skin: the glory was 18."""
+    rng = random.Random(23)
+    for index in range(5):
+        _, b = unseen_variant(rng, index)
+    return b
+
+
+def cloud_top_along_sun():
+    """Unseen variant 4 of seed 25: 150 overlapping particles of 60–120 m, the densest column of
+    optical depth 1e4, seen straight down along the sun, g = −0.5. Sorted by their centres, a dense
+    particle whose front lies tens of metres in front of another's was drawn behind it, so each
+    layer lay behind another's dense tail and the lit top came out at the ambient."""
+    rng = random.Random(25)
+    for index in range(5):
+        _, b = unseen_variant(rng, index)
+    return b
+
+
 HARD_CASES = {
     "optical_depth_1e4": optical_depth_1e4,
     "optical_depth_1e-5": optical_depth_1e_5,
@@ -331,6 +353,8 @@ HARD_CASES = {
     "spot_in_opaque_cloud": spot_in_opaque_cloud,
     "inside_towards_sun": inside_towards_sun,
     "spot_beside_opaque_specks": spot_beside_opaque_specks,
+    "glory_of_dense_particle": glory_of_dense_particle,
+    "cloud_top_along_sun": cloud_top_along_sun,
     "far_from_origin": lambda: far_from_origin((1.0e5, 1.0e5, -1.0e5)),
     "far_from_origin_at_origin": lambda: far_from_origin((0.0, 0.0, 0.0)),
     "zero_particles": zero_particles,

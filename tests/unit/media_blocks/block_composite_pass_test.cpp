@@ -74,24 +74,48 @@ render::GpuLightView sunView(float slices) {
     return render::packLightView(view, 0, slices, 256.0f);
 }
 
-TEST(BlocksOfUnresolvedParticles, ParticlesThinnerThanTheSliceSpacingOrATexel) {
+// One block per particle of `radii` and `sigmas`, all at (0, 0, −4).
+struct OneParticleBlocks {
+    ParticleSet particles;
     BlockPartition partition;
-    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.2f));     // 25 cm planes, 3.1 cm texels: resolved
-    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.1f));     // planes 25 cm apart, 20 cm wide: not
-    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.006f));   // 6 mm: neither planes nor texels
-    Block many = blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.006f);
-    many.count = kMaxOwnShadedBlockParticles + 1;  // too many to walk per texel ray
-    partition.blocks.push_back(many);
-    const std::vector<std::uint8_t> own = blocksOfUnresolvedParticles(partition, {sunView(32.0f)}, glm::dvec3(0.0));
-    EXPECT_EQ(own, (std::vector<std::uint8_t>{0, 1, 1, 0}));
-    EXPECT_EQ(blocksOfUnresolvedParticles(partition, {}, glm::dvec3(0.0)), (std::vector<std::uint8_t>{0, 0, 0, 0})) << "no light views";
+};
+
+OneParticleBlocks oneParticleBlocks(const std::vector<float>& radii, const std::vector<float>& sigmas) {
+    OneParticleBlocks out;
+    for (std::size_t i = 0; i < radii.size(); ++i) {
+        out.particles.push(glm::dvec3(0.0, 0.0, -4.0), radii[i], sigmas[i], Medium{});
+        Block b = blockAt(glm::dvec3(0.0, 0.0, -4.0), radii[i], radii[i]);
+        b.first = static_cast<std::uint32_t>(i);
+        out.partition.blocks.push_back(b);
+        out.partition.order.push_back(static_cast<std::uint32_t>(i));
+    }
+    return out;
+}
+
+TEST(BlocksOfUnresolvedParticles, ParticlesThinnerThanTheSliceSpacingOrATexelOrTooDenseForThem) {
+    // 32 slices over 8 m: planes 25 cm apart; texels 3.1 cm.
+    const OneParticleBlocks b = oneParticleBlocks({0.2f, 0.1f, 0.006f, 0.2f}, {1.0f, 1.0f, 1.0f, 10.0f});
+    const std::vector<std::uint8_t> own = blocksOfUnresolvedParticles(b.partition, b.particles, {sunView(32.0f)}, glm::dvec3(0.0));
+    EXPECT_EQ(own, (std::vector<std::uint8_t>{0, 1, 1, 1})) << "resolved; planes wider than it; texels too; τ 2.5 per interval";
+    EXPECT_EQ(blocksOfUnresolvedParticles(b.partition, b.particles, {}, glm::dvec3(0.0)), (std::vector<std::uint8_t>{0, 0, 0, 0}))
+        << "no light views";
+}
+
+TEST(BlocksOfUnresolvedParticles, TooManyParticlesToWalkKeepTheSlices) {
+    OneParticleBlocks b = oneParticleBlocks({0.006f}, {1.0f});
+    for (std::uint32_t k = 1; k <= kMaxOwnShadedBlockParticles; ++k) {
+        b.particles.push(glm::dvec3(0.0, 0.0, -4.0), 0.006f, 1.0f, Medium{});
+        b.partition.order.push_back(k);
+    }
+    b.partition.blocks[0].count = kMaxOwnShadedBlockParticles + 1;
+    EXPECT_EQ(blocksOfUnresolvedParticles(b.partition, b.particles, {sunView(32.0f)}, glm::dvec3(0.0)), std::vector<std::uint8_t>{0});
 }
 
 TEST(BlocksOfUnresolvedParticles, AnyViewThatDoesNotResolveThemDecides) {
-    BlockPartition partition;
-    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.2f));
-    EXPECT_EQ(blocksOfUnresolvedParticles(partition, {sunView(32.0f)}, glm::dvec3(0.0)), std::vector<std::uint8_t>{0});
-    EXPECT_EQ(blocksOfUnresolvedParticles(partition, {sunView(32.0f), sunView(4.0f)}, glm::dvec3(0.0)), std::vector<std::uint8_t>{1})
+    const OneParticleBlocks b = oneParticleBlocks({0.2f}, {1.0f});
+    EXPECT_EQ(blocksOfUnresolvedParticles(b.partition, b.particles, {sunView(32.0f)}, glm::dvec3(0.0)), std::vector<std::uint8_t>{0});
+    EXPECT_EQ(blocksOfUnresolvedParticles(b.partition, b.particles, {sunView(32.0f), sunView(4.0f)}, glm::dvec3(0.0)),
+              std::vector<std::uint8_t>{1})
         << "4 slices over 8 m are 2 m apart";
 }
 

@@ -84,22 +84,27 @@ std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, cons
     return near;
 }
 
-std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& partition, const std::vector<render::GpuLightView>& views,
-                                                       const glm::dvec3& origin) {
+bool sliceViewResolves(const render::GpuLightView& v, const glm::dvec3& centre, double radius, double sigma) {
+    const double spacing = (static_cast<double>(v.params.z) - v.params.y) / std::max(static_cast<double>(v.params.w), 1.0);
+    const double depth = -(glm::dmat4(v.view) * glm::dvec4(centre, 1.0)).z;
+    const double texel = v.params2.y * (v.params.x > 0.5f ? std::max(depth, 0.0) : 1.0);
+    return spacing <= 2.0 * radius && texel <= radius && sigma * std::max(spacing, texel) <= 2.0;
+}
+
+std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& partition, const ParticleSet& particles,
+                                                       const std::vector<render::GpuLightView>& views, const glm::dvec3& origin) {
     std::vector<std::uint8_t> unresolved(partition.blocks.size(), 0);
     for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
         const Block& block = partition.blocks[b];
         if (block.count == 0 || block.count > kMaxOwnShadedBlockParticles) continue;
-        const double radius = block.meanParticleRadius;
         const glm::dvec3 centre = block.centre - origin;
-        for (const render::GpuLightView& v : views) {
-            // As own_optical_depth.glsl slicesResolve decides it per shading point.
-            const double spacing = (static_cast<double>(v.params.z) - v.params.y) / std::max(static_cast<double>(v.params.w), 1.0);
-            const double depth = -(glm::dmat4(v.view) * glm::dvec4(centre, 1.0)).z;
-            const double texel = v.params2.y * (v.params.x > 0.5f ? std::max(depth, 0.0) : 1.0);
-            if (spacing > 2.0 * radius || texel > radius) {
-                unresolved[b] = 1;
-                break;
+        for (std::uint32_t k = block.first; k < block.first + block.count && !unresolved[b]; ++k) {
+            const std::uint32_t i = partition.order[k];
+            for (const render::GpuLightView& v : views) {
+                if (!sliceViewResolves(v, centre, particles.radius[i], particles.sigma[i])) {
+                    unresolved[b] = 1;
+                    break;
+                }
             }
         }
     }

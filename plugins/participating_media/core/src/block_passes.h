@@ -106,16 +106,20 @@ std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, cons
 // Blocks of at most this many particles may be shaded from their own particles (below).
 inline constexpr std::uint32_t kMaxOwnShadedBlockParticles = 64;  // block_own_optical_depth.glsl walks them per texel ray
 
+// Whether light view v's slices resolve a particle of radius R and peak extinction σ at `centre`
+// (origin-relative): slice planes and texels no farther apart than it is wide and neither holding
+// more than an optical depth of 2 of it (shaders/media/own_optical_depth.glsl slicesResolve).
+bool sliceViewResolves(const render::GpuLightView& v, const glm::dvec3& centre, double radius, double sigma);
+
 // Per block (1/0): whether it is shaded from its own particles (BLOCK_OWN_PARTICLES,
 // shaders/media/block_own_optical_depth.glsl): it has at most kMaxOwnShadedBlockParticles, and a
-// light view's slices do not resolve particles of its mean radius at its centre (slice planes
-// farther apart than such a particle is wide, or texels wider than its radius). Such a block is
-// lumps, not the smooth medium its depth profile stands for. `views`: the frame's transmittance
-// views (origin-relative, as packed for the shaders); `origin`: the frame origin. llvmpipe runs
-// that code in every pixel of a draw, taken or not (cumulus.gltf 640×360: the composite pass
-// 940 → 1440 ms), so only these blocks are drawn with it.
-std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& partition, const std::vector<render::GpuLightView>& views,
-                                                       const glm::dvec3& origin);
+// light view's slices do not resolve one of them at the block's centre (sliceViewResolves). Such
+// a block is lumps, not the smooth medium its depth profile stands for. `views`: the frame's
+// transmittance views (origin-relative, as packed for the shaders); `origin`: the frame origin.
+// llvmpipe runs that code in every pixel of a draw, taken or not (cumulus.gltf 640×360: the
+// composite pass 940 → 1440 ms), so only these blocks are drawn with it.
+std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& partition, const ParticleSet& particles,
+                                                       const std::vector<render::GpuLightView>& views, const glm::dvec3& origin);
 
 // The composite build a block is drawn with: which of the two optional parts it needs.
 enum BlockCompositeBuild : std::uint8_t {

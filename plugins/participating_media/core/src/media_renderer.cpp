@@ -187,7 +187,7 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
         if (!blockCompositePass_) blockCompositePass_ = std::make_unique<BlockCompositePass>();
         std::vector<std::uint8_t> builds = blocksNearMeshes(frame.partition, meshInstanceBoxes(context.input));
         if (!frame.instanced) {  // an instance's particles are not listed
-            const std::vector<std::uint8_t> own = blocksOfUnresolvedParticles(frame.partition, context.transmittance.views, v.origin);
+            const std::vector<std::uint8_t> own = blocksOfUnresolvedParticles(frame.partition, *particles_, context.transmittance.views, v.origin);
             for (std::size_t b = 0; b < builds.size(); ++b) builds[b] = static_cast<std::uint8_t>(builds[b] | (own[b] ? kBlockOwnParticles : 0));
         }
         media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, builds, *blockBuffers_, *buffer_,
