@@ -80,4 +80,3 @@ float blockLightDepth(int i, vec3 p, ivec2 items, vec3 centre) {
     vec2 own = ownBlockOpticalDepth(v, p, items, centre);
     return max(slices - own.x, 0.0) + own.y;
 }
-
