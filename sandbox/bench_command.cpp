@@ -19,6 +19,7 @@
 #include "nimbus/base/error.h"
 #include "nimbus/base/progress.h"
 #include "nimbus/gpu/context.h"
+#include "nimbus/media/block_partition.h"
 #include "nimbus/media/ecs/media_plugin.h"
 #include "nimbus/media/media_renderer.h"
 #include "nimbus/render/pass_timer.h"
@@ -152,7 +153,7 @@ int run(const BenchOptions& o) {
     const assets::RgbImage referenceImage = media::reference::renderReference(reference->inputs, referenceSettings);
     run.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
 
-    std::vector<BenchConfig> configs = standardSweep(reference->particles);
+    std::vector<BenchConfig> configs = standardSweep(reference->particles, media::lampPositions(reference->inputs.lights));
     if (!o.only.empty()) {
         std::erase_if(configs, [&](const BenchConfig& c) { return std::find(o.only.begin(), o.only.end(), c.name) == o.only.end(); });
         if (configs.empty()) throwInputError("--only", o.only.front(), "", "matches no setting of the sweep");

@@ -31,8 +31,8 @@ void renderFrame(ecs::App& app) {
 
 }  // namespace
 
-std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles) {
-    const int autoBlocks = media::automaticBlockCount(particles);
+std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, const std::vector<glm::dvec3>& lamps) {
+    const int autoBlocks = media::automaticBlockCount(particles, lamps);
     std::vector<BenchConfig> sweep;
     auto add = [&](std::string name, std::vector<std::pair<std::string, std::string>> settings) {
         sweep.push_back({std::move(name), std::move(settings)});

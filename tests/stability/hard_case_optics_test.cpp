@@ -135,8 +135,8 @@ TEST_F(StabilityTest, LightPerpendicularToViewWithinBound) {
 // tan-substitution of one pixel's ray: 2.021 + 0.016 ambient against the reference's 2.037); where
 // rays pass within millimetres of the light the reference itself fails (reference_near_light_test).
 // Bound: 15%. Measured: particles 3.6% (9.0% with the light averaged over the kernel and applied
-// at one point per particle; 178% before 213e2c7 put the cone inside that average), blocks 2.5%
-// (3.2% before their shading pieces were weighted by mass; 110% while a block was lit at one point: the peak pixel (46, 21) at 96×54 read 0.016 against
+// at one point per particle; 178% before 213e2c7 put the cone inside that average), blocks 1.8%
+// (2.5% before the lamp inside it doubled the blocks, block_partition.h; 3.2% before their shading pieces were weighted by mass; 110% while a block was lit at one point: the peak pixel (46, 21) at 96×54 read 0.016 against
 // 2.04; block_lighting.glsl blockLocalLightSegment integrates the lamp over each block's segment
 // with the block's own particles listed around the lamp, within the largest block's radius).
 const HardCase kSpotInCloud{.name = "spot_in_cloud", .scene = "spot_in_cloud.gltf"};
@@ -158,7 +158,7 @@ TEST_F(StabilityTest, SpotLightInsideCloudBlocksWithinBound) {
 // (117 in particles, 29 in blocks at 160×90).
 // What prevents it: shaders/media/lamp_neighbourhood.glsl caps the factor's log at 50 (a layer
 // behind more than e^−50 of transmittance has nothing a float can give back).
-// Bound: 15%. Measured: particles 5e-6, blocks 4.6%.
+// Bound: 15%. Measured: particles 5e-6, blocks 5e-6 (4.6% when this case was written).
 const HardCase kSpotInOpaqueCloud{.name = "spot_in_opaque_cloud", .scene = "spot_in_opaque_cloud.gltf"};
 
 TEST_F(StabilityTest, SpotLightAmongOpaqueParticlesStaysFinite) {

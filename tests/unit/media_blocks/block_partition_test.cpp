@@ -119,6 +119,30 @@ TEST(BlockPartition, AutomaticCountKeepsTheCostModelForThinMediaAndSplitsThickOn
     EXPECT_EQ(automaticBlockCount(ParticleSet{}), 0);
 }
 
+TEST(BlockPartition, AutomaticCountDoublesOnceForALampInsideTheMedium) {
+    // Thin (σ 0.3): the thickness bound keeps the cost model's count, so only the lamp moves it.
+    const ParticleSet thin = blobCloud(500, 5, glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(3.6, 1.8, 2.6), 0.9f, 1.5f, 0.3f);
+    const int costModel = costModelBlockCount(500);
+    const glm::dvec3 inside(0.0, 4.0, 0.0), beside(12.0, 4.0, 0.0), far(0.0, 400.0, 0.0);
+    EXPECT_EQ(automaticBlockCount(thin, {inside}), 2 * costModel);
+    EXPECT_EQ(automaticBlockCount(thin, {far, inside}), 2 * costModel);  // the nearest lamp counts
+    EXPECT_EQ(automaticBlockCount(thin, {beside}), costModel);           // lights the cloud from outside
+    EXPECT_EQ(automaticBlockCount(thin, {far}), costModel);
+    EXPECT_EQ(automaticBlockCount(thin, {}), costModel);
+    // Doubled once, not more, and not on top of the thickness bound's doublings.
+    const ParticleSet thick = blobCloud(500, 5, glm::dvec3(0.0, 4.0, 0.0), glm::dvec3(3.6, 1.8, 2.6), 0.9f, 1.5f, 10.0f);
+    EXPECT_EQ(automaticBlockCount(thick, {inside}), automaticBlockCount(thick));
+    EXPECT_EQ(partitionIntoBlocks(thin, 0, {inside}).blocks.size(), static_cast<std::size_t>(2 * costModel));
+    EXPECT_EQ(partitionIntoBlocks(thin, 7, {inside}).blocks.size(), 7u);  // a fixed count is kept
+    std::vector<assets::ResolvedLight> lights(3);
+    lights[0].position = glm::dvec3(9.0);  // directional: where its node sits means nothing
+    lights[1].params.type = assets::LightType::Point;
+    lights[1].position = inside;
+    lights[2].params.type = assets::LightType::Spot;
+    lights[2].position = far;
+    EXPECT_EQ(lampPositions(lights), (std::vector<glm::dvec3>{inside, far}));
+}
+
 TEST(BlockPartition, CoversEveryParticleOnceInNearlyEqualBlocks) {
     for (std::size_t n : {1u, 2u, 7u, 100u, 500u, 1013u}) {
         const ParticleSet set = blobCloud(n, static_cast<unsigned>(n));

@@ -36,6 +36,13 @@ void bisect(const ParticleSet& particles, std::vector<std::uint32_t>& order, std
 
 }  // namespace
 
+std::vector<glm::dvec3> lampPositions(const std::vector<assets::ResolvedLight>& lights) {
+    std::vector<glm::dvec3> lamps;
+    for (const assets::ResolvedLight& light : lights)
+        if (light.params.type != assets::LightType::Directional) lamps.push_back(light.position);
+    return lamps;
+}
+
 int costModelBlockCount(std::size_t particles) {
     if (particles == 0) return 0;
     return std::clamp(static_cast<int>(std::lround(2.0 * std::sqrt(static_cast<double>(particles)))), 1, kMaxBlocks);
@@ -58,32 +65,51 @@ double blockThickness(const ParticleSet& particles, const BlockPartition& partit
 
 namespace {
 
-// The count the thickness bound asks for, given the partition at the cost model's count.
-int countForThickness(const ParticleSet& particles, const BlockPartition& costModelPartition) {
+double median(std::vector<double> values) {
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    return *middle;
+}
+
+// A block's radius over its centre's distance to the nearest lamp (above 1: the lamp is inside it).
+double lampSpread(const Block& block, const std::vector<glm::dvec3>& lamps) {
+    double spread = 0.0;
+    for (const glm::dvec3& lamp : lamps)
+        spread = std::max(spread, block.radius / std::max(glm::length(lamp - block.centre), 1e-9 * block.radius));
+    return spread;
+}
+
+// The count the bounds ask for, given the partition at the cost model's count.
+int countForBounds(const ParticleSet& particles, const BlockPartition& costModelPartition, const std::vector<glm::dvec3>& lamps) {
     const std::size_t n = particles.size();
     const int costModel = static_cast<int>(costModelPartition.blocks.size());
-    std::vector<double> thickness;
+    std::vector<double> thickness, spread;
     thickness.reserve(costModelPartition.blocks.size());
-    for (const Block& block : costModelPartition.blocks) thickness.push_back(blockThickness(particles, costModelPartition, block));
-    const auto median = thickness.begin() + static_cast<std::ptrdiff_t>(thickness.size() / 2);
-    std::nth_element(thickness.begin(), median, thickness.end());
-    if (!(*median > kMaxBlockThickness)) return costModel;
-    // A block's thickness grows as the cube root of its member count in a medium of even density, so
-    // the count wants (median / limit)³ times more blocks; in powers of two, so that a particle
-    // moving from one frame to the next does not change the count and with it every membership.
-    const double ratio = *median / kMaxBlockThickness;
-    const int doublings = std::min(20, static_cast<int>(std::lround(3.0 * std::log2(ratio))));
+    spread.reserve(costModelPartition.blocks.size());
+    for (const Block& block : costModelPartition.blocks) {
+        thickness.push_back(blockThickness(particles, costModelPartition, block));
+        spread.push_back(lampSpread(block, lamps));
+    }
+    int doublings = 0;
+    if (const double medianThickness = median(thickness); medianThickness > kMaxBlockThickness) {
+        // A block's thickness grows as the cube root of its member count in a medium of even density,
+        // so the count wants (median / limit)³ times more blocks; in powers of two, so that a particle
+        // moving from one frame to the next does not change the count and with it every membership.
+        doublings = std::min(20, static_cast<int>(std::lround(3.0 * std::log2(medianThickness / kMaxBlockThickness))));
+    }
+    if (median(spread) > kMaxLampSpread) doublings = std::max(doublings, 1);
+    if (doublings <= 0) return costModel;
     const int ceiling = std::max(costModel, std::min(kMaxBlocks, static_cast<int>(n / 2)));
-    return static_cast<int>(std::min<long long>(static_cast<long long>(costModel) << std::max(doublings, 0), ceiling));
+    return static_cast<int>(std::min<long long>(static_cast<long long>(costModel) << doublings, ceiling));
 }
 
 }  // namespace
 
-int automaticBlockCount(const ParticleSet& particles) {
-    return static_cast<int>(partitionIntoBlocks(particles, 0).blocks.size());
+int automaticBlockCount(const ParticleSet& particles, const std::vector<glm::dvec3>& lamps) {
+    return static_cast<int>(partitionIntoBlocks(particles, 0, lamps).blocks.size());
 }
 
-BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount) {
+BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount, const std::vector<glm::dvec3>& lamps) {
     BlockPartition out;
     const std::size_t n = particles.size();
     if (n == 0) return out;
@@ -91,7 +117,7 @@ BlockPartition partitionIntoBlocks(const ParticleSet& particles, int blockCount)
         // Automatic: the cost model's partition is measured, and kept where it is thin enough.
         BlockPartition costModel = partitionIntoBlocks(particles, costModelBlockCount(n));
         if (n < 2) return costModel;
-        const int count = countForThickness(particles, costModel);
+        const int count = countForBounds(particles, costModel, lamps);
         return static_cast<std::size_t>(count) == costModel.blocks.size() ? costModel : partitionIntoBlocks(particles, count);
     }
     const std::size_t blocks = std::min<std::size_t>(n, static_cast<std::size_t>(blockCount));

@@ -69,7 +69,7 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
     if (blocks) {
         if (!blockFrame_) blockFrame_ = std::make_unique<BlockFrame>();
         if (!blockBuffers_) blockBuffers_ = std::make_unique<BlockGpuBuffers>();
-        blockFrame_->partition = partitionIntoBlocks(*particles_, settings_.blocks);
+        blockFrame_->partition = partitionIntoBlocks(*particles_, settings_.blocks, lampPositions(context.input.lights));
         blockFrame_->instanced = settings_.instancing;
         blockFrame_->prototype = choosePrototype(blockFrame_->partition);
         blockFrame_->lightPlans.clear();

@@ -174,7 +174,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("slice_resolution", "texels per side of a light slice (default 256)");
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
     settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
-    settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)))");
+    settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)), more in optically thick media or around a lamp inside them)");
     settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
     settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25 (default 1)");
     settings.declare("instancing", "blocks mode: build the cloud from one block prototype instanced at every block (default off)");
