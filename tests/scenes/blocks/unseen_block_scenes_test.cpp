@@ -24,6 +24,22 @@ std::filesystem::path sceneDir() {
     if (override != nullptr && *override != '\0') return override;
     return std::filesystem::path(NIMBUS_TEST_DATA_DIR) / "block_scenes";
 }
+
+// With $NIMBUS_BLOCK_SCENES_DUMP set, the seam test writes there what it compared
+// (<scene>_{reference,blocks,billboards,band}.exr; the band is 1 inside it), to see where an error lies.
+void dump(const std::string& scene, const char* what, const assets::RgbImage& image) {
+    const char* folder = std::getenv("NIMBUS_BLOCK_SCENES_DUMP");
+    if (folder == nullptr || *folder == '\0') return;
+    std::filesystem::create_directories(folder);
+    assets::writeImage(std::filesystem::path(folder) / (scene + "_" + what + ".exr"), image);
+}
+
+assets::RgbImage bandMask(const std::vector<std::size_t>& band, int width, int height) {
+    assets::RgbImage mask(width, height);
+    for (const std::size_t k : band)
+        mask.set(static_cast<int>(k % static_cast<std::size_t>(width)), static_cast<int>(k / static_cast<std::size_t>(width)), glm::vec3(1.0f));
+    return mask;
+}
 constexpr int kWidth = 256, kHeight = 144;
 constexpr double kMaxRelRmse = 0.08;
 
@@ -104,8 +120,14 @@ TEST_P(UnseenSeamBandTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
     std::size_t seamPixels = 0;
     const std::vector<std::size_t> band = seamBand(scene, kWidth, kHeight, "wing", 2, &seamPixels);
     ASSERT_GT(seamPixels, 100u) << "the thin mesh must cut the cloud in this view";
-    const double blocks = relRmseOver(renderRealtime(scene, kWidth, kHeight, {"mode=blocks"}), reference, band);
-    const double billboards = relRmseOver(renderRealtime(scene, kWidth, kHeight, {"soft_particles=off"}), reference, band);
+    const assets::RgbImage blocksImage = renderRealtime(scene, kWidth, kHeight, {"mode=blocks"});
+    const assets::RgbImage billboardsImage = renderRealtime(scene, kWidth, kHeight, {"soft_particles=off"});
+    const double blocks = relRmseOver(blocksImage, reference, band);
+    const double billboards = relRmseOver(billboardsImage, reference, band);
+    dump(GetParam(), "reference", reference);
+    dump(GetParam(), "blocks", blocksImage);
+    dump(GetParam(), "billboards", billboardsImage);
+    dump(GetParam(), "band", bandMask(band, kWidth, kHeight));
     std::printf("%s: seam band (%zu px) blocks %.4f, particles soft_particles=off %.4f\n", GetParam().c_str(), band.size(), blocks, billboards);
     EXPECT_LT(blocks, billboards);
 }
