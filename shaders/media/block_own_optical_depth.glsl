@@ -36,11 +36,14 @@ vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre) {
         exact += ownDepthUpTo(toP, q.positionRadius.w, q.albedoSigma.w, r.perspective, r.depth * stretch);
     }
     if (!r.holds) return vec2(0.0, exact);
+    float meanRadius = 0.0;  // the tile's: its block's mean particle radius (all its particles are listed)
+    for (int n = items.x; n < items.x + items.y; ++n) meanRadius += particles[impostorItems[n].x].positionRadius.w;
+    meanRadius /= float(items.y);
     float smeared = 0.0;
     for (int j = 0; j < 4; ++j) {
         if (!(r.weight[j] > 0.0)) continue;
-        // The texel's optical depth and depth moments, as block_impostors.frag sums them.
-        float tau = 0.0, first = 0.0, second = 0.0;
+        // The texel's optical depth, depth moments and [front, back], as block_impostors.frag makes them.
+        float tau = 0.0, first = 0.0, second = 0.0, front = 3.0e38, back = -3.0e38;
         for (int n = items.x; n < items.x + items.y; ++n) {
             GpuParticle q = particles[impostorItems[n].x];
             float radius = q.positionRadius.w;
@@ -55,10 +58,14 @@ vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre) {
             tau += t;
             first += t * mean;
             second += t * (m.y + mean * mean);
+            float extent = min(c.halfChord, 1.7320508 * radius / 3.0);
+            front = min(front, c.tClosest + max(lo, -extent));
+            back = max(back, c.tClosest + max(extent, lo));
         }
         if (!(tau > 0.0)) continue;
         float mean = first / tau;
-        BlockLightProfile profile = blockLightProfile(mean + momentOrigin, sqrt(max(second / tau - mean * mean, 0.0)), r.perspective);
+        BlockLightProfile profile = blockLightProfile(mean + momentOrigin, sqrt(max(second / tau - mean * mean, 0.0)), front, back,
+                                                      blockKernelReach(meanRadius), r.perspective);
         float lo = r.firstSlice ? 0.0 : tau * blockLightShare(profile, r.nearPlane * stretch);
         float hi = tau * blockLightShare(profile, r.farPlane * stretch);
         smeared += r.weight[j] * mix(lo, hi, r.f);

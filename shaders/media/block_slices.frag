@@ -1,8 +1,8 @@
 #version 450 core
 // A block's optical depth towards the light, spread over the slice planes (seed 000 §2.2): plane k
 // gets τ · Φ((t_k − μ)/σ), a normal with the block's optical-depth-weighted mean and deviation along
-// the light ray (for a lamp: the normal cut at the lamp that has them). Additive, like the particle
-// slices.
+// the light ray, cut where the block's kernels start (and at a lamp) and complete past where they
+// end (block_light_profile.glsl). Additive, like the particle slices.
 #include "common/math.glsl"
 #include "media/optics.glsl"
 #include "media/block_data.glsl"
@@ -36,7 +36,7 @@ void main() {
     float mean = s.sums1.x / s.tau;  // about tileMomentOrigin, which puts an instance where it is
     float deviation = sqrt(max(s.sums1.y / s.tau - mean * mean, 0.0));
     mean += tileMomentOrigin(tile, uView, uParams.x > 0.5, uLightOrigin);
-    BlockLightProfile profile = blockLightProfile(mean, deviation, uParams.x > 0.5);
+    BlockLightProfile profile = blockLightProfile(mean, deviation, s.front, s.back, blockKernelReach(tile.centreRadius.w), uParams.x > 0.5);
     int slices = int(uParams.w);
     float spacing = (uParams.z - uParams.y) / uParams.w;
     vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
