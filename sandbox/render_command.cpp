@@ -106,7 +106,10 @@ int run(const RenderOptions& o) {
             stats["media_particles"] = media->renderer->stats().particles;
             stats["media_slices"] = media->renderer->stats().slices;
             stats["media_slice_views"] = media->renderer->stats().sliceViews;
-            if (frame.settings.mode == media::MediaMode::Blocks) stats["media_blocks"] = media->renderer->stats().blocks;
+            if (frame.settings.mode == media::MediaMode::Blocks) {
+                stats["media_blocks"] = media->renderer->stats().blocks;
+                stats["media_lamp_slice_particles"] = media->renderer->stats().lampSliceParticles;
+            }
         }
         std::ofstream file(o.stats);
         if (!file) throwInputError(o.stats, "", "", "cannot write the stats file");

@@ -81,7 +81,7 @@ void main() {
     block.positionRadius = vec4(tile.centreRadius.xyz, tile.centreRadius.w);
     block.albedoSigma = vec4(s.sums1.yzw / s.tau, 0.0);
     block.emissionG = vec4(s.sums2.xyz / s.tau, clamp(s.sums2.w / s.tau, -0.999, 0.999));
-    block.extra = vec4(0.0);
+    block.extra = vec4(0.0, tile.lampSlices.x, 0.0, 0.0);  // y: blockLightDepth's (block_own_optical_depth.glsl)
     LayerOrder layer = LayerOrder(-1, vBlock.y, tSurface, 1e30);
     // What the light sees of it ends at the surface; a surface just in front of the block cuts
     // only its kernels' tails, which lie within `reach` of it.

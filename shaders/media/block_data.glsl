@@ -6,6 +6,7 @@ struct BlockTile {
     vec4 instance;      // x: ray-distance offset of the tile's depths (an instanced prototype), else 0;
                         // y: 1 when the tile has one texel per view pixel, on the pixel grid;
                         // z, w: the block's first item in impostorItems and its item count (0: none listed)
+    vec4 lampSlices;    // x: 1 when the lamps' slices hold the block's particles one by one, not its light impostor
 };
 
 layout(std430, binding = 6) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)

@@ -113,7 +113,7 @@ float blockLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float ta
         f[j] *= lightShape(i, x) * (extinction[j] + (inBlock ? (1.0 - listed[j]) * rest : 0.0));
         if (f[j] <= 0.0) continue;
         float ownInFront = inFront[j] + rest * clamp(t[j] - t0, 0.0, t1 - t0);
-        float towardsLight = blockLightDepth(i, x, items, block.positionRadius.xyz);
+        float towardsLight = blockLightDepth(i, x, items, block);
         f[j] *= exp(logFactor[j] - ownInFront - towardsLight) * lampMeshVisibility(i, x);
         sum += f[j] * phaseValue(block.extra.x, block.emissionG.w, normalize(lightPos - x), dir);
     }
@@ -213,10 +213,10 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
             vec3 x = origin + dir * t;
             float transmittance = exp(-mediumOpticalDepth(i, x));
             if (own) {
-                float atX = blockLightDepth(i, x, items, block.positionRadius.xyz);
+                float atX = blockLightDepth(i, x, items, block);
                 float vBar = shadingDepthFraction(pieceTau[k]) * pieceTau[k];
                 transmittance = vBar > 1e-4 && pieceTau[k] > 1e-4
-                    ? layerTransmittance(blockLightDepth(i, origin + dir * pieceSpan[k].x, items, block.positionRadius.xyz), atX, vBar, pieceTau[k])
+                    ? layerTransmittance(blockLightDepth(i, origin + dir * pieceSpan[k].x, items, block), atX, vBar, pieceTau[k])
                     : exp(-atX);
             }
             scattered += pieceWeight[k] * scatteredLight(i, x, dir, block, visibility, transmittance);

@@ -22,8 +22,17 @@ const bool kOwnParticles = false;
 
 // x: what viewOpticalDepth(v, p) holds of the block's particles `items` (block_slices.frag, read
 // back as the slices are); y: their exact optical depth from the light to p. `centre`: the block's
-// centre (origin-relative world), about which its light impostor sums its depth moments.
-vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre) {
+// centre (origin-relative world), about which its light impostor sums its depth moments;
+// `oneByOne`: a lamp's view holds its particles one by one (light_slices.frag), not its impostor.
+vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre, bool oneByOne) {
+    if (oneByOne && v.params.x > 0.5) {
+        vec2 sum = vec2(0.0);
+        for (int n = items.x; n < items.x + items.y; ++n) {
+            GpuParticle q = particles[impostorItems[n].x];
+            sum += ownOpticalDepth(v, p, q.positionRadius, q.albedoSigma.w);
+        }
+        return sum;
+    }
     SliceRead r = sliceRead(v, p);
     if (!r.inView) return vec2(0.0);
     vec3 centreView = (v.view * vec4(centre, 1.0)).xyz;
@@ -74,16 +83,17 @@ vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre) {
 }
 
 // The medium's optical depth towards light i at a point p of a block (its listed particles
-// `items`): the slices', with the block's own share made exact in the BLOCK_OWN_PARTICLES build,
-// drawn for the blocks whose particles some view's slices do not resolve (in a view that does, the
-// correction changes little and costs the same).
-float blockLightDepth(int i, vec3 p, ivec2 items, vec3 centre) {
+// `items`; block.extra.y: 1 when the lamps' slices hold them one by one): the slices', with the
+// block's own share made exact in the BLOCK_OWN_PARTICLES build, drawn for the blocks whose
+// particles some view's slices do not resolve (in a view that does, the correction changes little
+// and costs the same).
+float blockLightDepth(int i, vec3 p, ivec2 items, GpuParticle block) {
     if (!kOwnParticles) return mediumOpticalDepth(i, p);
     int view = lightSliceView(i, p);
     if (view < 0) return 0.0;
     GpuLightView v = transmittanceViews[view];
     float slices = viewOpticalDepth(v, p);
     if (items.y <= 0) return slices;
-    vec2 own = ownBlockOpticalDepth(v, p, items, centre);
+    vec2 own = ownBlockOpticalDepth(v, p, items, block.positionRadius.xyz, block.extra.y > 0.5);
     return max(slices - own.x, 0.0) + own.y;
 }

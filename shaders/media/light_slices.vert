@@ -12,9 +12,17 @@ flat out int vParticle;
 
 const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
 
+#ifdef SLICE_PARTICLE_LIST
+// Blocks mode: only the particles a lamp's slices take one by one (media/block_slice_pass.cpp).
+layout(std430, binding = 9) readonly buffer LampSliceParticles { uint lampSliceParticles[]; };
+int instanceParticle() { return int(lampSliceParticles[gl_InstanceID]); }
+#else
+int instanceParticle() { return gl_InstanceID; }
+#endif
+
 void main() {
-    vParticle = gl_InstanceID;
-    vec4 pr = particles[gl_InstanceID].positionRadius;
+    vParticle = instanceParticle();
+    vec4 pr = particles[vParticle].positionRadius;
     vec3 c = (uView * vec4(pr.xyz, 1.0)).xyz;  // light view space; the light looks down −Z
     vec2 corner = kCorners[gl_VertexID];
     if (uParams.x < 0.5) {

@@ -21,6 +21,11 @@ from gltf_builder import Builder  # noqa: E402
 
 BASE_SEED = 9000
 COUNT = 10
+# Scenes of later seeds (BASE_SEED values 9100-9900 were judged, not committed) kept because one
+# caught a fault: (base seed, index).
+#   9700/07: a wing 0.6 m from a lamp, in front of a dense particle whose block lies behind it; the
+#            block's light impostor darkened the wing by 12% (block_partition.h kMaxLampImpostorSpread).
+KEPT = [(9700, 7)]
 SHAPES = ["blob", "layer", "twin", "tower", "cigar"]
 # Central optical depth along a diameter, thin to moderately thick, spread over the scenes.
 OPTICAL_DEPTHS = [0.6, 1.0, 1.5, 2.2, 3.0, 4.0, 5.5, 7.0, 9.0, 12.0]
@@ -93,8 +98,8 @@ def extinction_for(optical_depth, positions, sizes, densities, half):
     return optical_depth / (mean_extinction_per_sigma * path)
 
 
-def scene(index):
-    rng = random.Random(BASE_SEED + index)
+def scene(index, base_seed=BASE_SEED):
+    rng = random.Random(base_seed + index)
     shape = SHAPES[index % len(SHAPES)]
     radii_range = PARTICLE_RADII[rng.randrange(len(PARTICLE_RADII))]
     mean_radius = sum(radii_range) / 2
@@ -164,9 +169,10 @@ def scene(index):
 
 def main():
     check = "--check" in sys.argv[1:]
-    for index in range(COUNT):
-        b, info = scene(index)
-        name = "block_scene_%02d" % index
+    scenes = [(BASE_SEED, index, "block_scene_%02d" % index) for index in range(COUNT)]
+    scenes += [(seed, index, "block_scene_%d_%02d" % (seed, index)) for seed, index in KEPT]
+    for seed, index, name in scenes:
+        b, info = scene(index, seed)
         if not check:
             b.write(os.path.join(HERE, name + ".gltf"))
         print(name, " ".join("%s=%s" % kv for kv in info.items()))

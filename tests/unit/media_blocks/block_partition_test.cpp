@@ -143,6 +143,24 @@ TEST(BlockPartition, AutomaticCountDoublesOnceForALampInsideTheMedium) {
     EXPECT_EQ(lampPositions(lights), (std::vector<glm::dvec3>{inside, far}));
 }
 
+TEST(BlockPartition, LampSlicesTakeTheBlocksALampSeesWide) {
+    BlockPartition p;
+    p.blocks.resize(3);
+    p.blocks[0].centre = glm::dvec3(0.0);
+    p.blocks[0].radius = 1.0;
+    p.blocks[1].centre = glm::dvec3(10.0, 0.0, 0.0);
+    p.blocks[1].radius = 1.0;
+    p.blocks[2].centre = glm::dvec3(0.0, 10.0, 0.0);
+    p.blocks[2].radius = 3.0;
+    const glm::dvec3 lamp(1.5, 0.0, 0.0);  // just outside block 0: r/d = 0.67; block 1: 0.12; block 2: 0.3
+    EXPECT_EQ(blocksSeenWideFromLamps(p, {lamp}), (std::vector<std::uint8_t>{1, 0, 0}));
+    EXPECT_EQ(blocksSeenWideFromLamps(p, {glm::dvec3(0.0, 14.0, 0.0)}), (std::vector<std::uint8_t>{0, 0, 1}));  // 3/4
+    EXPECT_EQ(blocksSeenWideFromLamps(p, {glm::dvec3(0.0, 16.0, 0.0)}), (std::vector<std::uint8_t>{0, 0, 0}));  // 3/6: not wider
+    EXPECT_EQ(blocksSeenWideFromLamps(p, {lamp, glm::dvec3(10.0, 0.0, 0.0)}), (std::vector<std::uint8_t>{1, 1, 0}));  // inside 1
+    EXPECT_EQ(blocksSeenWideFromLamps(p, {}), (std::vector<std::uint8_t>{0, 0, 0}));
+    EXPECT_DOUBLE_EQ(lampSpread(p.blocks[2], {glm::dvec3(0.0, 16.0, 0.0), glm::dvec3(0.0, 40.0, 0.0)}), 0.5);  // the nearest
+}
+
 TEST(BlockPartition, CoversEveryParticleOnceInNearlyEqualBlocks) {
     for (std::size_t n : {1u, 2u, 7u, 100u, 500u, 1013u}) {
         const ParticleSet set = blobCloud(n, static_cast<unsigned>(n));

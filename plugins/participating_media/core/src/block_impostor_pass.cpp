@@ -20,11 +20,14 @@ void ensure(gpu::Buffer& buffer, std::size_t& capacity, std::size_t bytes) {
 }  // namespace
 
 BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin, float scale,
-                            int maxAtlasSize) {
+                            int maxAtlasSize, const std::vector<std::uint8_t>& notDrawn) {
     BlockViewPlan plan;
     plan.view = view;
     const std::vector<BlockFootprint> footprints = blockFootprints(partition, view, origin);
-    const AtlasLayout layout = packAtlas(tileSizes(footprints, view.viewport, scale), maxAtlasSize);
+    std::vector<glm::ivec2> sizes = tileSizes(footprints, view.viewport, scale);
+    for (std::size_t b = 0; b < notDrawn.size() && b < sizes.size(); ++b)
+        if (notDrawn[b] != 0) sizes[b] = glm::ivec2(0);
+    const AtlasLayout layout = packAtlas(sizes, maxAtlasSize);
     plan.atlasSize = glm::ivec2(layout.width, layout.height);
     plan.tiles.resize(partition.blocks.size());
     for (std::size_t b = 0; b < partition.blocks.size(); ++b) {
@@ -127,6 +130,17 @@ void BlockGpuBuffers::uploadDrawOrder(const std::vector<std::uint32_t>& blocks) 
     ensure(orderBuffer_, orderCapacity_, std::max<std::size_t>(blocks.size(), 1) * sizeof(std::uint32_t));
     if (!blocks.empty())
         glNamedBufferSubData(orderBuffer_.id(), 0, static_cast<GLsizeiptr>(blocks.size() * sizeof(std::uint32_t)), blocks.data());
+}
+
+void BlockGpuBuffers::uploadLampSliceParticles(const std::vector<std::uint32_t>& particles) {
+    lampSliceParticles_ = particles.size();
+    ensure(lampSliceBuffer_, lampSliceCapacity_, std::max<std::size_t>(particles.size(), 1) * sizeof(std::uint32_t));
+    if (!particles.empty())
+        glNamedBufferSubData(lampSliceBuffer_.id(), 0, static_cast<GLsizeiptr>(particles.size() * sizeof(std::uint32_t)), particles.data());
+}
+
+void BlockGpuBuffers::bindLampSliceParticles() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLampSliceParticlesBinding, lampSliceBuffer_.id());
 }
 
 void BlockGpuBuffers::bind(std::size_t tileSet) const {

@@ -63,20 +63,25 @@ double blockThickness(const ParticleSet& particles, const BlockPartition& partit
     return block.radius > 0.0 ? mass / (kPi * block.radius * block.radius) : 0.0;
 }
 
+double lampSpread(const Block& block, const std::vector<glm::dvec3>& lamps) {
+    double spread = 0.0;
+    for (const glm::dvec3& lamp : lamps)
+        spread = std::max(spread, block.radius / std::max(glm::length(lamp - block.centre), 1e-9 * block.radius));
+    return spread;
+}
+
+std::vector<std::uint8_t> blocksSeenWideFromLamps(const BlockPartition& partition, const std::vector<glm::dvec3>& lamps) {
+    std::vector<std::uint8_t> wide(partition.blocks.size(), 0);
+    for (std::size_t b = 0; b < wide.size(); ++b) wide[b] = lampSpread(partition.blocks[b], lamps) > kMaxLampImpostorSpread ? 1 : 0;
+    return wide;
+}
+
 namespace {
 
 double median(std::vector<double> values) {
     const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
     std::nth_element(values.begin(), middle, values.end());
     return *middle;
-}
-
-// A block's radius over its centre's distance to the nearest lamp (above 1: the lamp is inside it).
-double lampSpread(const Block& block, const std::vector<glm::dvec3>& lamps) {
-    double spread = 0.0;
-    for (const glm::dvec3& lamp : lamps)
-        spread = std::max(spread, block.radius / std::max(glm::length(lamp - block.centre), 1e-9 * block.radius));
-    return spread;
 }
 
 // The count the bounds ask for, given the partition at the cost model's count.

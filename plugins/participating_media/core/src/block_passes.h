@@ -22,6 +22,8 @@ struct alignas(16) GpuBlockTile {
                              // y: 1 when the tile has one texel per view pixel, on the pixel grid;
                              // z, w: the block's first impostor item and item count (w 0: an instance,
                              // whose particles are not in the item list)
+    glm::vec4 lampSlices{0.0f};  // x: 1 when the lamps' slices hold the block's particles one by one
+                                 // (blocksSeenWideFromLamps), not its light impostor; yzw free
 };
 
 // One view's impostor layout: where every block's tile is, and how big the atlas is.
@@ -31,8 +33,10 @@ struct BlockViewPlan {
     glm::ivec2 atlasSize{1, 1};
 };
 
+// `notDrawn` (per block, 1/0; empty: none): blocks whose tile this view leaves out (width 0), as a
+// lamp's views leave out the blocks whose particles go into its slices one by one.
 BlockViewPlan planBlockView(const BlockPartition& partition, const ImpostorView& view, const glm::dvec3& origin, float scale,
-                            int maxAtlasSize);
+                            int maxAtlasSize, const std::vector<std::uint8_t>& notDrawn = {});
 
 // Self-similar instancing: every block is drawn as a copy of block `prototype`, so the atlas holds
 // one tile (the prototype's) that every block's rectangle maps onto, with its depths shifted by the
@@ -54,12 +58,16 @@ public:
     void uploadItems(const BlockPartition& partition, std::size_t onlyBlock);  // instancing: the prototype's particles
     void uploadTileSets(const std::vector<const BlockViewPlan*>& plans);
     void uploadDrawOrder(const std::vector<std::uint32_t>& blocks);
+    // The particles the lamps' slices take one by one (blocksSeenWideFromLamps), for BlockSlicePass.
+    void uploadLampSliceParticles(const std::vector<std::uint32_t>& particles);
+    void bindLampSliceParticles() const;
+    std::size_t lampSliceParticleCount() const { return lampSliceParticles_; }
     void bind(std::size_t tileSet) const;  // items, draw order and the tiles of one uploaded plan
     std::size_t itemCount() const { return items_; }
 
 private:
-    gpu::Buffer itemBuffer_, tileBuffer_, orderBuffer_;
-    std::size_t itemCapacity_ = 0, tileCapacity_ = 0, orderCapacity_ = 0, items_ = 0;
+    gpu::Buffer itemBuffer_, tileBuffer_, orderBuffer_, lampSliceBuffer_;
+    std::size_t itemCapacity_ = 0, tileCapacity_ = 0, orderCapacity_ = 0, lampSliceCapacity_ = 0, items_ = 0, lampSliceParticles_ = 0;
     std::vector<std::pair<std::size_t, std::size_t>> tileRanges_;  // (byte offset, bytes) per tile set
 };
 
@@ -145,7 +153,10 @@ private:
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 
-// Light slices from blocks: per light view, light impostors, then each block spread over the slices.
+inline constexpr GLuint kLampSliceParticlesBinding = 9;  // shaders/media/light_slices.vert SLICE_PARTICLE_LIST
+
+// Light slices from blocks: per light view, light impostors, then each block spread over the slices;
+// a lamp's views also take the particles of the blocks it sees wide one by one, as particles mode does.
 class BlockSlicePass {
 public:
     BlockSlicePass();
@@ -156,6 +167,7 @@ public:
 
 private:
     gpu::Program program_;
+    gpu::Program particleProgram_;  // light_slices.* over the lamp slice particles
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

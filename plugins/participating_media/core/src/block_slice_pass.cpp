@@ -1,5 +1,6 @@
 // Blocks mode, light side (seed 000 §2.2): for each light view, the blocks' light impostors, then
-// every block spread over the slices with uniform density between its front and back.
+// every block spread over the slices by its depth profile (block_slices.frag); a lamp's views add
+// the particles of the blocks it sees wide one by one (media/block_partition.h kMaxLampImpostorSpread).
 #include <glm/gtc/type_ptr.hpp>
 
 #include "block_passes.h"
@@ -9,6 +10,8 @@ namespace nimbus::media {
 
 BlockSlicePass::BlockSlicePass() {
     program_ = gpu::compileProgram({.vertex = "media/block_slices.vert", .fragment = "media/block_slices.frag"});
+    particleProgram_ = gpu::compileProgram(
+        {.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag", .defines = {"SLICE_PARTICLE_LIST"}});
 }
 
 render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std::vector<SliceView>& views,
@@ -51,6 +54,16 @@ render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std:
                 setSliceViewUniforms(program, v, resolution);
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(plans[i].tiles.size()));
+                if (v.view.perspective && blocks.lampSliceParticleCount() > 0) {
+                    const GLuint list = particleProgram_.id();
+                    glUseProgram(list);
+                    particles.bindParticles();
+                    blocks.bindLampSliceParticles();
+                    setSliceViewUniforms(list, v, resolution);
+                    const glm::mat4 projection = v.view.viewProjection * glm::inverse(v.view.view);
+                    glProgramUniformMatrix4fv(list, 5, 1, GL_FALSE, glm::value_ptr(projection));
+                    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks.lampSliceParticleCount()));
+                }
                 glBindVertexArray(0);
                 glDisable(GL_BLEND);
                 unbindSliceLayers(fbo.id(), v);

@@ -21,6 +21,8 @@ struct BlockFrame {
     BlockViewPlan cameraPlan;
     std::vector<std::uint32_t> backToFront;
     std::vector<std::uint32_t> blockRankOf;  // per particle: its block's place in backToFront
+    std::vector<std::uint8_t> wideFromLamps;         // per block: the lamps' slices take its particles one by one
+    std::vector<std::uint32_t> lampSliceParticles;   // those particles
 };
 
 namespace {
@@ -73,7 +75,19 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
         blockFrame_->instanced = settings_.instancing;
         blockFrame_->prototype = choosePrototype(blockFrame_->partition);
         blockFrame_->lightPlans.clear();
+        // An instance has no particles of its own to draw one by one.
+        BlockFrame& frame = *blockFrame_;
+        frame.wideFromLamps = frame.instanced ? std::vector<std::uint8_t>(frame.partition.blocks.size(), 0)
+                                              : blocksSeenWideFromLamps(frame.partition, lampPositions(context.input.lights));
+        frame.lampSliceParticles.clear();
+        for (std::size_t b = 0; b < frame.partition.blocks.size(); ++b) {
+            if (frame.wideFromLamps[b] == 0) continue;
+            const Block& block = frame.partition.blocks[b];
+            frame.lampSliceParticles.insert(frame.lampSliceParticles.end(), frame.partition.order.begin() + block.first,
+                                            frame.partition.order.begin() + block.first + block.count);
+        }
         stats_.blocks = static_cast<int>(blockFrame_->partition.blocks.size());
+        stats_.lampSliceParticles = frame.lampSliceParticles.size();
     }
 
     struct Upload {};
@@ -94,6 +108,7 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
             for (const BlockViewPlan& plan : frame.lightPlans) plans.push_back(&plan);
             blockBuffers_->uploadTileSets(plans);
             blockBuffers_->uploadDrawOrder(frame.backToFront);
+            blockBuffers_->uploadLampSliceParticles(frame.lampSliceParticles);
             if (!anyLamp(context.input.lights)) return;
             frame.blockRankOf.assign(particles_->size(), 0u);
             double largestBlock = 0.0;  // a lamp's 1/d² varies across a block within about its size of the lamp
@@ -137,7 +152,9 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
         for (const SliceView& v : views) {
             const ImpostorView view{v.view.view, v.view.viewProjection, v.view.perspective, v.lightOrigin, 0.0f,
                                     glm::ivec2(resolution)};
-            blockFrame_->lightPlans.push_back(planFor(view, context.view.origin));
+            // A lamp's views leave out the blocks whose particles its slices take one by one.
+            const std::vector<std::uint8_t> none;
+            blockFrame_->lightPlans.push_back(planFor(view, context.view.origin, view.perspective ? blockFrame_->wideFromLamps : none));
         }
         if (!impostorRenderer_) impostorRenderer_ = std::make_unique<BlockImpostorRenderer>();
         if (!blockSlicePass_) blockSlicePass_ = std::make_unique<BlockSlicePass>();
@@ -149,10 +166,10 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
     context.transmittanceSlices = slicePass_->add(graph, views, resolution, *buffer_);
 }
 
-BlockViewPlan MediaRenderer::planFor(const ImpostorView& view, const glm::dvec3& origin) const {
+BlockViewPlan MediaRenderer::planFor(const ImpostorView& view, const glm::dvec3& origin, const std::vector<std::uint8_t>& notDrawn) const {
     const BlockFrame& frame = *blockFrame_;
     return frame.instanced ? planInstancedBlockView(frame.partition, frame.prototype, view, origin, impostorScale(), kMaxAtlasSize)
-                           : planBlockView(frame.partition, view, origin, impostorScale(), kMaxAtlasSize);
+                           : planBlockView(frame.partition, view, origin, impostorScale(), kMaxAtlasSize, notDrawn);
 }
 
 float MediaRenderer::impostorScale() const { return settings_.impostorScale > 0.0f ? settings_.impostorScale : 0.5f; }
@@ -171,7 +188,9 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
     if (settings_.mode == MediaMode::Blocks) {
         const ImpostorView view{v.view, v.viewProjection, !v.orthographic, glm::vec3(0.0f), v.znear, target.size};
         BlockFrame& frame = *blockFrame_;
-        frame.cameraPlan = planFor(view, v.origin);
+        frame.cameraPlan = planFor(view, v.origin, {});
+        for (std::size_t b = 0; b < frame.cameraPlan.tiles.size(); ++b)
+            frame.cameraPlan.tiles[b].lampSlices.x = frame.wideFromLamps[b] != 0 ? 1.0f : 0.0f;
         stats_.impostorAtlas = frame.cameraPlan.atlasSize;
         // Back to front by distance from the eye to the block centre (depth along the axis when orthographic).
         std::vector<double> keys(frame.partition.blocks.size());

@@ -5,8 +5,10 @@
 // chosen mode into an offscreen target that the compose pass puts over the scene.
 //
 // Does not: simulate (emitters fill the ParticleSet), own a GL context, or know about the ECS.
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "nimbus/media/particle_set.h"
 #include "nimbus/render/scene_renderer.h"
@@ -40,6 +42,7 @@ struct MediaFrameStats {
     int slices = 0;            // per light view, this frame
     int sliceViews = 0;        // light views that got slices
     int blocks = 0;            // blocks mode: blocks this frame
+    std::size_t lampSliceParticles = 0;  // blocks mode: particles the lamps' slices take one by one (block_partition.h)
     glm::ivec2 impostorAtlas{0};  // blocks mode: the camera's impostor atlas size
 };
 
@@ -73,7 +76,8 @@ public:
 
 private:
     float impostorScale() const;
-    BlockViewPlan planFor(const ImpostorView& view, const glm::dvec3& origin) const;
+    // `notDrawn`: per block, 1 where this view leaves its tile out (planBlockView).
+    BlockViewPlan planFor(const ImpostorView& view, const glm::dvec3& origin, const std::vector<std::uint8_t>& notDrawn) const;
 
     const ParticleSet* particles_ = nullptr;
     MediaRenderSettings settings_;
