@@ -21,10 +21,11 @@ const bool kOwnParticles = false;
 #endif
 
 // x: what viewOpticalDepth(v, p) holds of the block's particles `items` (block_slices.frag, read
-// back as the slices are); y: their exact optical depth from the light to p. `centre`: the block's
-// centre (origin-relative world), about which its light impostor sums its depth moments;
-// `oneByOne`: a lamp's view holds its particles one by one (light_slices.frag), not its impostor.
-vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre, bool oneByOne) {
+// back as the slices are); y: their exact optical depth from the light to p. `centreRadius`: the
+// block's centre (origin-relative world), about which its light impostor sums its depth moments,
+// and its mean particle radius (its tile's); `oneByOne`: a lamp's view holds its particles one by
+// one (light_slices.frag), not its impostor.
+vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec4 centreRadius, bool oneByOne) {
     if (oneByOne && v.params.x > 0.5) {
         vec2 sum = vec2(0.0);
         for (int n = items.x; n < items.x + items.y; ++n) {
@@ -35,7 +36,7 @@ vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre, bool
     }
     SliceRead r = sliceRead(v, p);
     if (!r.inView) return vec2(0.0);
-    vec3 centreView = (v.view * vec4(centre, 1.0)).xyz;
+    vec3 centreView = (v.view * vec4(centreRadius.xyz, 1.0)).xyz;
     float momentOrigin = r.perspective ? length(centreView) : -centreView.z;  // block_data.glsl tileMomentOrigin
     float exact = 0.0, stretch;
     for (int n = items.x; n < items.x + items.y; ++n) {
@@ -45,9 +46,6 @@ vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre, bool
         exact += ownDepthUpTo(toP, q.positionRadius.w, q.albedoSigma.w, r.perspective, r.depth * stretch);
     }
     if (!r.holds) return vec2(0.0, exact);
-    float meanRadius = 0.0;  // the tile's: its block's mean particle radius (all its particles are listed)
-    for (int n = items.x; n < items.x + items.y; ++n) meanRadius += particles[impostorItems[n].x].positionRadius.w;
-    meanRadius /= float(items.y);
     float smeared = 0.0;
     for (int j = 0; j < 4; ++j) {
         if (!(r.weight[j] > 0.0)) continue;
@@ -74,7 +72,7 @@ vec2 ownBlockOpticalDepth(GpuLightView v, vec3 p, ivec2 items, vec3 centre, bool
         if (!(tau > 0.0)) continue;
         float mean = first / tau;
         BlockLightProfile profile = blockLightProfile(mean + momentOrigin, sqrt(max(second / tau - mean * mean, 0.0)), front, back,
-                                                      blockKernelReach(meanRadius), r.perspective);
+                                                      blockKernelReach(centreRadius.w), r.perspective);
         float lo = r.firstSlice ? 0.0 : tau * blockLightShare(profile, r.nearPlane * stretch);
         float hi = tau * blockLightShare(profile, r.farPlane * stretch);
         smeared += r.weight[j] * mix(lo, hi, r.f);
@@ -94,6 +92,6 @@ float blockLightDepth(int i, vec3 p, ivec2 items, GpuParticle block) {
     GpuLightView v = transmittanceViews[view];
     float slices = viewOpticalDepth(v, p);
     if (items.y <= 0) return slices;
-    vec2 own = ownBlockOpticalDepth(v, p, items, block.positionRadius.xyz, block.extra.y > 0.5);
+    vec2 own = ownBlockOpticalDepth(v, p, items, block.positionRadius, block.extra.y > 0.5);
     return max(slices - own.x, 0.0) + own.y;
 }

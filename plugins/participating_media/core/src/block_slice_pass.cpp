@@ -59,9 +59,7 @@ render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std:
                     glUseProgram(list);
                     particles.bindParticles();
                     blocks.bindLampSliceParticles();
-                    setSliceViewUniforms(list, v, resolution);
-                    const glm::mat4 projection = v.view.viewProjection * glm::inverse(v.view.view);
-                    glProgramUniformMatrix4fv(list, 5, 1, GL_FALSE, glm::value_ptr(projection));
+                    setParticleSliceUniforms(list, v, resolution);
                     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks.lampSliceParticleCount()));
                 }
                 glBindVertexArray(0);

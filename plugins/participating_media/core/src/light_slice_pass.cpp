@@ -38,6 +38,12 @@ void setSliceViewUniforms(GLuint program, const SliceView& v, int resolution) {
     glProgramUniform3fv(program, 6, 1, glm::value_ptr(v.lightOrigin));
 }
 
+void setParticleSliceUniforms(GLuint program, const SliceView& v, int resolution) {
+    setSliceViewUniforms(program, v, resolution);
+    const glm::mat4 projection = v.view.viewProjection * glm::inverse(v.view.view);
+    glProgramUniformMatrix4fv(program, 5, 1, GL_FALSE, glm::value_ptr(projection));
+}
+
 LightSlicePass::LightSlicePass() {
     program_ = gpu::compileProgram({.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag"});
 }
@@ -68,9 +74,7 @@ render::ResourceHandle LightSlicePass::add(render::FrameGraph& graph, const std:
             for (const auto& v : views) {
                 bindSliceLayers(fbo.id(), resources.id(d.slices), v);
 
-                const glm::mat4 projection = v.view.viewProjection * glm::inverse(v.view.view);
-                setSliceViewUniforms(program, v, resolution);
-                glProgramUniformMatrix4fv(program, 5, 1, GL_FALSE, glm::value_ptr(projection));
+                setParticleSliceUniforms(program, v, resolution);
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
                 glBindVertexArray(0);

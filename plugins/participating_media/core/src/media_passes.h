@@ -28,6 +28,8 @@ void unbindSliceLayers(GLuint framebuffer, const SliceView& view);
 // block_slices.vert): 0 view, 2 params (perspective, depth near/far, slices), 3 half extent
 // (media/view_rays.glsl), 4 slice resolution, 6 light origin.
 void setSliceViewUniforms(GLuint program, const SliceView& view, int resolution);
+// setSliceViewUniforms and the light view's projection (5) that light_slices.vert draws particles with.
+void setParticleSliceUniforms(GLuint program, const SliceView& view, int resolution);
 
 // Light slices (DESIGN.md §3 light-slice system): every slice view renders all particles once,
 // additively, into ceil(K/4) layers of one RGBA32F array.

@@ -71,14 +71,15 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
     if (blocks) {
         if (!blockFrame_) blockFrame_ = std::make_unique<BlockFrame>();
         if (!blockBuffers_) blockBuffers_ = std::make_unique<BlockGpuBuffers>();
-        blockFrame_->partition = partitionIntoBlocks(*particles_, settings_.blocks, lampPositions(context.input.lights));
-        blockFrame_->instanced = settings_.instancing;
-        blockFrame_->prototype = choosePrototype(blockFrame_->partition);
-        blockFrame_->lightPlans.clear();
-        // An instance has no particles of its own to draw one by one.
         BlockFrame& frame = *blockFrame_;
+        const std::vector<glm::dvec3> lamps = lampPositions(context.input.lights);
+        frame.partition = partitionIntoBlocks(*particles_, settings_.blocks, lamps);
+        frame.instanced = settings_.instancing;
+        frame.prototype = choosePrototype(frame.partition);
+        frame.lightPlans.clear();
+        // An instance has no particles of its own to draw one by one.
         frame.wideFromLamps = frame.instanced ? std::vector<std::uint8_t>(frame.partition.blocks.size(), 0)
-                                              : blocksSeenWideFromLamps(frame.partition, lampPositions(context.input.lights));
+                                              : blocksSeenWideFromLamps(frame.partition, lamps);
         frame.lampSliceParticles.clear();
         for (std::size_t b = 0; b < frame.partition.blocks.size(); ++b) {
             if (frame.wideFromLamps[b] == 0) continue;
@@ -86,7 +87,7 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
             frame.lampSliceParticles.insert(frame.lampSliceParticles.end(), frame.partition.order.begin() + block.first,
                                             frame.partition.order.begin() + block.first + block.count);
         }
-        stats_.blocks = static_cast<int>(blockFrame_->partition.blocks.size());
+        stats_.blocks = static_cast<int>(frame.partition.blocks.size());
         stats_.lampSliceParticles = frame.lampSliceParticles.size();
     }
 

@@ -50,7 +50,8 @@
 // 9700/07 passes (1.63% vs 2.35%) since a lamp's slices take the blocks it sees wide particle by
 // particle (kMaxLampImpostorSpread below); 9800/01 and 9900/01 err in sunlight, with or without
 // the wing and the lamp, where a block of small dense particles is shaded at its pieces' uniform
-// points (block_lighting.glsl; shaded from its own particles, both pass).
+// points (block_lighting.glsl; with every block shaded from its own particles, measured in a
+// temporary build, both pass, but block_scene_08 fails).
 #include <cstdint>
 #include <vector>
 
@@ -99,15 +100,17 @@ double blockThickness(const ParticleSet& particles, const BlockPartition& partit
 // A block's radius over its centre's distance to the nearest of `lamps` (above 1: a lamp inside it).
 double lampSpread(const Block& block, const std::vector<glm::dvec3>& lamps);
 
-// A lamp's slices (block_slice_pass.cpp) take the particles of a block it sees wider than this one
-// by one, in place of the block's light impostor. The impostor spreads a block's optical depth
-// along each lamp ray as one normal, and a block whose radius is comparable to its distance from
-// the lamp spans along a ray about as much as the ray is long: a wing 0.6 m from a lamp, in front
-// of a dense particle with the rest of its block behind it, took optical depth about 0.15 from that
-// normal (0.12 once cut at the block's front, block_light_profile.glsl) instead of 0.006 (fresh make_block_scenes.py seed 9700 scene 07, committed as
-// block_scene_9700_07: the wing 12% dark, its seam band 7.1% against billboards' 2.4%; 1.6% now).
-// r/d = 0.5 is where the block's depth span reaches its distance. Blocks mode's light side then
-// costs particles mode's for those particles, in lamp views only.
+// Where some lamp sees a block wider than this, the lamps' slices (block_slice_pass.cpp; every
+// lamp's, so that one flag per block says what they hold) take its particles one by one, in place
+// of the block's light impostor. The impostor spreads a block's optical depth along each lamp ray
+// as one normal, and a block whose radius is comparable to its distance from the lamp spans along
+// a ray about as much as the ray is long: a wing 0.6 m from a lamp, in front of a dense particle
+// with the rest of its block behind it, took optical depth about 0.15 from that normal (0.12 once
+// cut at the block's front, block_light_profile.glsl) instead of 0.006 (fresh make_block_scenes.py
+// seed 9700 scene 07, committed as block_scene_9700_07: the wing 12% dark, its seam band 8.42%
+// against billboards' 2.35%; 1.63% now). r/d = 0.5 is where the block's depth span reaches its
+// distance. Blocks mode's light side then costs particles mode's for those particles, in lamp
+// views only.
 inline constexpr double kMaxLampImpostorSpread = 0.5;
 
 // Per block (1/0): whether some lamp sees it wider than kMaxLampImpostorSpread.
