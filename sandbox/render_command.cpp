@@ -109,6 +109,7 @@ int run(const RenderOptions& o) {
             if (frame.settings.mode == media::MediaMode::Blocks) {
                 stats["media_blocks"] = media->renderer->stats().blocks;
                 stats["media_lamp_slice_particles"] = media->renderer->stats().lampSliceParticles;
+                stats["media_exactly_shaded_blocks"] = media->renderer->stats().exactlyShadedBlocks;
             }
         }
         std::ofstream file(o.stats);

@@ -14,6 +14,7 @@
 #include "media/lighting.glsl"
 #include "media/block_data.glsl"
 #include "media/block_lighting.glsl"
+#include "media/block_order.glsl"
 
 layout(binding = 3) uniform sampler2D uSceneDepth;
 layout(binding = 5) uniform sampler2D uImpostorDepths;
@@ -55,7 +56,7 @@ void main() {
     // [front, back] holds each particle's ±√3·R/3 (block_impostors.frag); its kernel reaches R.
     // The tile knows only the block's mean radius: 1.5× it covers members up to that size, and a
     // larger member's far tail takes the profile's cut.
-    float reach = (1.0 - 0.57735027) * tile.centreRadius.w * 1.5;
+    float reach = blockKernelReach(tile.centreRadius.w);
     if (tSurface <= s.front - reach) discard;  // the block lies wholly behind the surface
     // The share of the block's optical depth in front of the surface: exact from the block's own
     // particles where the surface lies among them, else from the depth profile the impostor's
@@ -97,6 +98,12 @@ void main() {
         profile.listed = items;
     }
 #endif
-    vec3 source = blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer);
+#ifdef BLOCK_EXACT_SHADING
+    float neighbours = gatherOrderNeighbours(vBlock.x, vBlock.y, ndc, tSurface, uImpostorDepths, uImpostorMoments);
+    int pieces = exactShadingPieces(tau, neighbours);
+#else
+    int pieces = BLOCK_SHADING_PIECES;
+#endif
+    vec3 source = blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer, pieces);
     outColor = vec4(source * alpha, alpha);
 }

@@ -4,6 +4,10 @@
 #include "media/block_light_profile.glsl"
 #include "media/block_own_optical_depth.glsl"
 
+// block_order.glsl (the BLOCK_EXACT_SHADING build): the log of the factor that makes the overlapping
+// blocks' attenuation of light scattered at ray distance t exact; 0 in the other builds.
+float blockOrderLogFactor(float t);
+
 // How a block's optical depth lies along one ray: a Gaussian with the impostor's mean and deviation
 // of depth, cut to the block's [front, back] (seed 000 §2.4 assumes uniform density over that
 // interval; the moments follow where the mass actually lies, as the light slices spread a block in
@@ -133,21 +137,35 @@ float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile,
 // A block is shaded at this many points along its visible segment: one point missed how the light
 // changes across a block of several particles (its own shadow, the mesh's): on cloud.gltf the seam
 // band erred 1.7% with one, 1.2% with two (equal weights). With the profile's mass as weights,
-// 0.76% with two, 1.16% with three and 1.26% with four.
+// 0.76% with two, 1.16% with three and 1.26% with four: the smooth profile's errors and the
+// compositing order's cancel at two. The BLOCK_EXACT_SHADING build, which corrects the order
+// (block_order.glsl), converges with more points instead (exactShadingPieces).
 const int BLOCK_SHADING_PIECES = 2;
+#ifdef BLOCK_EXACT_SHADING
+const int MAX_SHADING_PIECES = 16;
+#else
+const int MAX_SHADING_PIECES = BLOCK_SHADING_PIECES;
+#endif
+
+// The exact build's piece count: one per 0.5 of optical depth along the ray, the block's own and
+// its overlapping neighbours' (`neighbours`), 4 to 16. The order factor varies across a piece as
+// the neighbours' mass in front of it does, and its value at one point misses its mean (Jensen's
+// gap): s9700_04, a τ 9 cigar of 1.0-1.6 m particles, erred 1.89% in the seam band with 8 pieces,
+// 1.24% with 12 and 0.99% with 16 (billboards 1.16%).
+int exactShadingPieces(float tau, float neighbours) { return clamp(int(ceil((tau + neighbours) / 0.5)), 4, MAX_SHADING_PIECES); }
 
 // The source of a block's visible segment [front, back] of optical depth τ, whose kernels reach
 // `tails` further in front and behind (0 where the segment is cut): directional lights and
-// distant lamps at BLOCK_SHADING_PIECES points, one per piece of equal length, each holding the
+// distant lamps at `pieces` points (at most MAX_SHADING_PIECES), one per piece of equal length, each holding the
 // depth profile's share of τ and weighted by the share of the block's light it sends to the front,
 // with the mesh visibility taken over the piece; point and spot lights near the segment or whose
 // cone's edge crosses it are integrated over the whole of it (blockLocalLightSegment: 1/d² across
 // a block spans far more than across one particle, and one shading point missed a lamp's glow by
 // up to 95%).
 vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails, float tau, GpuParticle block, ivec2 items,
-                        LayerOrder layer) {
+                        LayerOrder layer, int pieces) {
     float t0 = profile.front, t1 = profile.back;
-    float pieceLength = (t1 - t0) / float(BLOCK_SHADING_PIECES);
+    float pieceLength = (t1 - t0) / float(pieces);
     float alpha = oneMinusExpNeg(tau);
     // The kernels' tails reach past [front, back] (which holds each particle's ±√3·R/3): where a
     // shadow boundary crosses them, the lit share counts them, as the reference does (seed 19
@@ -167,30 +185,47 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     // seed 13 variant 09, reference 3.06) gave 0.10 shaded at the piece's uniform point with one
     // transmittance, 1.25 at the listed point, 3.33 with the layer integral (particles mode: 3.33).
     // A smooth block keeps both: the layer integral erred more there (stop 13: block_scene_05
-    // 1.66% → 2.33%).
+    // 1.66% → 2.33%). The BLOCK_EXACT_SHADING build places the pieces and their points by the listed
+    // particles too (`listed`), with the light from the slices: its pieces are thin enough that the
+    // point's transmittance stands for the piece's (s9700_04's seam band 2.73% at uniform points,
+    // 1.30% at the listed ones; 0.99% with the own particles' light too, at three times the cost).
     bool own = kOwnParticles && items.y > 0;
-    vec2 pieceSpan[BLOCK_SHADING_PIECES];
-    float pieceAt[BLOCK_SHADING_PIECES], pieceWeight[BLOCK_SHADING_PIECES], pieceTau[BLOCK_SHADING_PIECES];
+    bool listed = (kOwnParticles || kExactShading) && items.y > 0;
+    vec2 pieceSpan[MAX_SHADING_PIECES];
+    float pieceAt[MAX_SHADING_PIECES], pieceWeight[MAX_SHADING_PIECES], pieceTau[MAX_SHADING_PIECES];
     float before = 0.0;  // the profile's share of the block's optical depth in front of piece k
-    for (int k = 0; k < BLOCK_SHADING_PIECES; ++k) {
+    for (int k = 0; k < pieces; ++k) {
         float pieceFront = t0 + float(k) * pieceLength;
-        pieceSpan[k] = vec2(k == 0 ? wide.front : pieceFront, k + 1 == BLOCK_SHADING_PIECES ? wide.back : pieceFront + pieceLength);
-        float after = k + 1 == BLOCK_SHADING_PIECES ? 1.0 : profileMassBefore(wide, pieceSpan[k].y);
+        pieceSpan[k] = vec2(k == 0 ? wide.front : pieceFront, k + 1 == pieces ? wide.back : pieceFront + pieceLength);
+        float after = k + 1 == pieces ? 1.0 : profileMassBefore(wide, pieceSpan[k].y);
         // The medium starts at the eye (a piece's kernel tails reach behind it when the camera is
         // inside), and the pieces' shares are the listed particles' too: with the profile's, whose
         // moments a cut at the eye bends, and the tails behind it, the phase peak seen into the sun
         // from inside a particle of τ 30 was 2.7× too bright (hard case inside_towards_sun).
-        if (own) {
+        if (listed) {
             pieceSpan[k].x = max(pieceSpan[k].x, 0.0);
-            after = k + 1 == BLOCK_SHADING_PIECES ? 1.0 : listedMassShare(items, origin, dir, wide, pieceSpan[k].y);
+            after = k + 1 == pieces ? 1.0 : listedMassShare(items, origin, dir, wide, pieceSpan[k].y);
         }
         float share = max(after - before, 0.0);
-        pieceAt[k] = own ? listedShadingPoint(items, origin, dir, pieceSpan[k]) : pieceFront + shadingDepthFraction(tau * share) * pieceLength;
+        pieceAt[k] = listed ? listedShadingPoint(items, origin, dir, pieceSpan[k]) : pieceFront + shadingDepthFraction(tau * share) * pieceLength;
         pieceTau[k] = tau * share;
         pieceWeight[k] = alpha > 0.0 ? oneMinusExpNeg(tau * share) * exp(-tau * before) / alpha : share;
         before = after;
     }
-    vec3 scattered = frame.ambient.rgb;
+    // What the other blocks' compositing order leaves wrong at each piece's point (block_order.glsl),
+    // for every light, the ambient and the emission alike.
+    float orderFactor[MAX_SHADING_PIECES];
+    float weighted = 1.0;  // the pieces' weights times their order factors
+#ifdef BLOCK_EXACT_SHADING
+    weighted = 0.0;
+    for (int k = 0; k < pieces; ++k) {
+        orderFactor[k] = exp(blockOrderLogFactor(pieceAt[k]));
+        weighted += pieceWeight[k] * orderFactor[k];
+    }
+#else
+    for (int k = 0; k < pieces; ++k) orderFactor[k] = 1.0;
+#endif
+    vec3 scattered = frame.ambient.rgb * weighted;
     float radius = block.positionRadius.w;
     for (int i = 0; i < frame.counts.x; ++i) {
 #ifdef MEDIA_LOCAL_LIGHTS  // block_composite_pass.cpp builds this only for frames with point or spot lights
@@ -205,7 +240,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
         }
 #endif
         BlockProfile piece = wide;
-        for (int k = 0; k < BLOCK_SHADING_PIECES; ++k) {
+        for (int k = 0; k < pieces; ++k) {
             piece.front = pieceSpan[k].x;
             piece.back = pieceSpan[k].y;
             float t = pieceAt[k];
@@ -219,8 +254,8 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
                     ? layerTransmittance(blockLightDepth(i, origin + dir * pieceSpan[k].x, items, block), atX, vBar, pieceTau[k])
                     : exp(-atX);
             }
-            scattered += pieceWeight[k] * scatteredLight(i, x, dir, block, visibility, transmittance);
+            scattered += pieceWeight[k] * orderFactor[k] * scatteredLight(i, x, dir, block, visibility, transmittance);
         }
     }
-    return block.albedoSigma.rgb * scattered + block.emissionG.rgb;
+    return block.albedoSigma.rgb * scattered + block.emissionG.rgb * weighted;
 }

@@ -1,12 +1,14 @@
 // Tests plugins/participating_media/core/src/block_composite_pass.cpp: which blocks are composited
 // with the exact cut through their own particles (blocksNearMeshes: a mesh may pass among them),
-// and which are shaded from their own particles (blocksOfUnresolvedParticles: the light slices do
-// not resolve them).
+// which are shaded from their own particles (blocksOfUnresolvedParticles: the light slices do
+// not resolve them), and which exactly (blocksShadedExactly: a mesh is seen in the medium there).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "block_passes.h"
+#include "block_test_clouds.h"
+#include "nimbus/render/view.h"
 
 namespace nimbus::media {
 namespace {
@@ -117,6 +119,39 @@ TEST(BlocksOfUnresolvedParticles, AnyViewThatDoesNotResolveThemDecides) {
     EXPECT_EQ(blocksOfUnresolvedParticles(b.partition, b.particles, {sunView(32.0f), sunView(4.0f)}, glm::dvec3(0.0)),
               std::vector<std::uint8_t>{1})
         << "4 slices over 8 m are 2 m apart";
+}
+
+// The camera at z = 10 looks down −z at a plate 2 m wide, 4 cm thick, at the origin (facing it).
+struct PlateView {
+    render::View view = render::makeView(test::lookAtCamera(glm::dvec3(0.0, 0.0, 10.0), glm::dvec3(0.0)), 160, 120);
+    MeshBox plate;
+    PlateView() { plate.half = glm::dvec3(1.0, 1.0, 0.02); }
+};
+
+TEST(BlocksShadedExactly, NearAMeshOrInFrontOfOneAmongTheBlocks) {
+    const PlateView scene;
+    BlockPartition partition;
+    partition.blocks.push_back(blockAt(glm::dvec3(0.5, 0.0, 0.3), 0.5, 0.2f));   // through the plate
+    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.3, 4.0), 0.5, 0.2f));   // between the eye and the plate
+    partition.blocks.push_back(blockAt(glm::dvec3(2.0, 0.0, 4.0), 0.5, 0.2f));   // in front, but beside it on the screen
+    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.0, -4.0), 0.5, 0.2f));  // behind it
+    partition.blocks.push_back(blockAt(glm::dvec3(6.0, 0.0, 4.0), 0.5, 0.2f));   // off the screen
+    const BlockViewPlan plan = planBlockView(partition, ImpostorView{scene.view.view, scene.view.viewProjection, true, glm::vec3(0.0f),
+                                                                     scene.view.znear, glm::ivec2(160, 120)},
+                                             scene.view.origin, 1.0f, 2048);
+    EXPECT_EQ(blocksShadedExactly(partition, {scene.plate}, plan, scene.view), (std::vector<std::uint8_t>{1, 1, 0, 0, 0}));
+}
+
+TEST(BlocksShadedExactly, AMeshAmongNoBlockShadesNoneExactly) {
+    const PlateView scene;
+    BlockPartition partition;
+    partition.blocks.push_back(blockAt(glm::dvec3(0.0, 0.3, 4.0), 0.5, 0.2f));  // in front of the plate, far from it
+    const BlockViewPlan plan = planBlockView(partition, ImpostorView{scene.view.view, scene.view.viewProjection, true, glm::vec3(0.0f),
+                                                                     scene.view.znear, glm::ivec2(160, 120)},
+                                             scene.view.origin, 1.0f, 2048);
+    EXPECT_EQ(blocksShadedExactly(partition, {scene.plate}, plan, scene.view), std::vector<std::uint8_t>{0})
+        << "a ground under a cloud is seen behind every block, and passes among none";
+    EXPECT_EQ(blocksShadedExactly(partition, {}, plan, scene.view), std::vector<std::uint8_t>{0});
 }
 
 }  // namespace

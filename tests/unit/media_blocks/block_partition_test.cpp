@@ -323,5 +323,46 @@ TEST(BlockPartition, FarFromTheOriginBlocksStayCompactAndValid) {
     EXPECT_NEAR(mean(blockSpreads(far, p)), mean(blockSpreads(near, partitionIntoBlocks(near, 0))), 0.1);
 }
 
+TEST(OverlappingBlockLists, OverlappingSpheresNearestFirstWithTheirRanks) {
+    BlockPartition partition;
+    const auto add = [&](const glm::dvec3& centre, double radius) {
+        Block b;
+        b.centre = centre;
+        b.radius = radius;
+        b.count = 1;
+        partition.blocks.push_back(b);
+    };
+    add(glm::dvec3(0.0), 1.0);
+    add(glm::dvec3(1.8, 0.0, 0.0), 1.0);  // overlaps block 0
+    add(glm::dvec3(0.0, 1.0, 0.0), 0.5);  // overlaps block 0, nearer than block 1; not block 1 (2.06 m apart)
+    add(glm::dvec3(9.0, 0.0, 0.0), 1.0);  // alone
+    const std::vector<std::uint32_t> backToFront{3, 1, 0, 2};
+    const std::vector<glm::uvec2> lists = overlappingBlockLists(partition, backToFront);
+    ASSERT_GE(lists.size(), 4u);
+    const auto entries = [&](std::uint32_t b) {
+        return std::vector<glm::uvec2>(lists.begin() + lists[b].x, lists.begin() + lists[b].x + lists[b].y);
+    };
+    EXPECT_EQ(entries(0), (std::vector<glm::uvec2>{{2u, 3u}, {1u, 1u}})) << "(block, rank), nearest first";
+    EXPECT_EQ(entries(1), (std::vector<glm::uvec2>{{0u, 2u}}));
+    EXPECT_EQ(entries(2), (std::vector<glm::uvec2>{{0u, 2u}}));
+    EXPECT_TRUE(entries(3).empty());
+}
+
+TEST(OverlappingBlockLists, KeepsTheNearestWhenMoreOverlap) {
+    BlockPartition partition;
+    for (std::size_t k = 0; k <= kMaxOrderNeighbours + 4; ++k) {
+        Block b;
+        b.centre = glm::dvec3(0.01 * static_cast<double>(k), 0.0, 0.0);
+        b.radius = 1.0;
+        b.count = 1;
+        partition.blocks.push_back(b);
+    }
+    std::vector<std::uint32_t> order(partition.blocks.size());
+    for (std::uint32_t k = 0; k < order.size(); ++k) order[k] = k;
+    const std::vector<glm::uvec2> lists = overlappingBlockLists(partition, order);
+    EXPECT_EQ(lists[0].y, kMaxOrderNeighbours);
+    for (std::uint32_t k = 0; k < kMaxOrderNeighbours; ++k) EXPECT_EQ(lists[lists[0].x + k].x, k + 1) << "block 0's nearest, in order";
+}
+
 }  // namespace
 }  // namespace nimbus::media

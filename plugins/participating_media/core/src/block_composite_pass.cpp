@@ -84,6 +84,54 @@ std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, cons
     return near;
 }
 
+namespace {
+
+// The NDC rectangle (min xy, max zw) a box covers in `view`; the whole screen where it reaches
+// behind the eye.
+glm::dvec4 screenRectangle(const MeshBox& box, const render::View& view) {
+    glm::dvec4 rect(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                    -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+    const glm::dmat4 viewProjection(view.viewProjection);
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::dvec3 p = box.centre - view.origin;
+        for (int k = 0; k < 3; ++k) p += box.axis[k] * ((corner >> k) & 1 ? box.half[k] : -box.half[k]);
+        const glm::dvec4 clip = viewProjection * glm::dvec4(p, 1.0);
+        if (!(clip.w > 1e-9)) return glm::dvec4(-1.0, -1.0, 1.0, 1.0);
+        const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+        rect = glm::dvec4(glm::min(glm::dvec2(rect), ndc), glm::max(glm::dvec2(rect.z, rect.w), ndc));
+    }
+    return rect;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> blocksShadedExactly(const BlockPartition& partition, const std::vector<MeshBox>& meshes,
+                                              const BlockViewPlan& cameraPlan, const render::View& view) {
+    std::vector<std::uint8_t> exact = blocksNearMeshes(partition, meshes);
+    // The meshes that pass among the blocks: those some block comes near, one mesh at a time.
+    std::vector<glm::dvec4> rects;
+    std::vector<double> farthest;  // a mesh box's farthest distance from the eye
+    for (const MeshBox& box : meshes) {
+        const std::vector<std::uint8_t> near = blocksNearMeshes(partition, {box});
+        if (std::find(near.begin(), near.end(), std::uint8_t{1}) == near.end()) continue;
+        rects.push_back(screenRectangle(box, view));
+        double hull = 0.0;
+        for (int k = 0; k < 3; ++k) hull += box.half[k] * box.half[k];
+        farthest.push_back(glm::length(box.centre - view.origin) + std::sqrt(hull));
+    }
+    for (std::size_t b = 0; b < partition.blocks.size() && !rects.empty(); ++b) {
+        if (!(cameraPlan.tiles[b].atlas.z > 0.0f)) continue;  // not drawn (off the screen)
+        const glm::vec4 rect = cameraPlan.tiles[b].rect;
+        const Block& block = partition.blocks[b];
+        const double nearest = glm::length(block.centre - view.origin) - block.radius;
+        for (std::size_t m = 0; m < rects.size() && !exact[b]; ++m) {
+            const bool overlaps = rect.x <= rects[m].z && rect.z >= rects[m].x && rect.y <= rects[m].w && rect.w >= rects[m].y;
+            if (overlaps && nearest < farthest[m]) exact[b] = 1;
+        }
+    }
+    return exact;
+}
+
 bool sliceViewResolves(const render::GpuLightView& v, const glm::dvec3& centre, double radius, double sigma) {
     const double spacing = (static_cast<double>(v.params.z) - v.params.y) / std::max(static_cast<double>(v.params.w), 1.0);
     const double depth = -(glm::dmat4(v.view) * glm::dvec4(centre, 1.0)).z;
@@ -114,11 +162,12 @@ std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& part
 BlockCompositePass::BlockCompositePass() { programs(kBlockPlain); }
 
 LocalLightPrograms& BlockCompositePass::programs(std::uint8_t build) {
-    std::unique_ptr<LocalLightPrograms>& programs = programs_[build & 3];
+    std::unique_ptr<LocalLightPrograms>& programs = programs_[build & 7];
     if (!programs) {
         gpu::ProgramDesc desc{.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"};
         if (build & kBlockExactCut) desc.defines.push_back("BLOCK_EXACT_CUT");
         if (build & kBlockOwnParticles) desc.defines.push_back("BLOCK_OWN_PARTICLES");
+        if (build & kBlockExactShading) desc.defines.push_back("BLOCK_EXACT_SHADING");
         programs = std::make_unique<LocalLightPrograms>(std::move(desc));
     }
     return *programs;
@@ -159,7 +208,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
     std::vector<Run> runs;
     std::uint8_t runBuild = 0;
     for (std::size_t r = 0; r < backToFront.size(); ++r) {
-        const std::uint8_t build = builds[backToFront[r]] & 3;
+        const std::uint8_t build = builds[backToFront[r]] & 7;
         if (runs.empty() || build != runBuild) {
             runs.push_back({static_cast<GLint>(r), 0, &programs(build).forLights(context.input.lights)});
             runBuild = build;

@@ -132,6 +132,12 @@ void BlockGpuBuffers::uploadDrawOrder(const std::vector<std::uint32_t>& blocks) 
         glNamedBufferSubData(orderBuffer_.id(), 0, static_cast<GLsizeiptr>(blocks.size() * sizeof(std::uint32_t)), blocks.data());
 }
 
+void BlockGpuBuffers::uploadOrderNeighbours(const std::vector<glm::uvec2>& lists) {
+    ensure(neighbourBuffer_, neighbourCapacity_, std::max<std::size_t>(lists.size(), 1) * sizeof(glm::uvec2));
+    if (!lists.empty())
+        glNamedBufferSubData(neighbourBuffer_.id(), 0, static_cast<GLsizeiptr>(lists.size() * sizeof(glm::uvec2)), lists.data());
+}
+
 void BlockGpuBuffers::uploadLampSliceParticles(const std::vector<std::uint32_t>& particles) {
     lampSliceParticles_ = particles.size();
     ensure(lampSliceBuffer_, lampSliceCapacity_, std::max<std::size_t>(particles.size(), 1) * sizeof(std::uint32_t));
@@ -149,6 +155,7 @@ void BlockGpuBuffers::bind(std::size_t tileSet) const {
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kBlockTilesBinding, tileBuffer_.id(), static_cast<GLintptr>(offset),
                       static_cast<GLsizeiptr>(bytes));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDrawOrderBinding, orderBuffer_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBlockNeighboursBinding, neighbourBuffer_.id());
 }
 
 BlockImpostorRenderer::BlockImpostorRenderer() {

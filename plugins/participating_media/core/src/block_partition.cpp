@@ -76,6 +76,28 @@ std::vector<std::uint8_t> blocksSeenWideFromLamps(const BlockPartition& partitio
     return wide;
 }
 
+std::vector<glm::uvec2> overlappingBlockLists(const BlockPartition& partition, const std::vector<std::uint32_t>& backToFront) {
+    const std::size_t count = partition.blocks.size();
+    std::vector<std::uint32_t> rank(count, 0u);
+    for (std::size_t r = 0; r < backToFront.size(); ++r) rank[backToFront[r]] = static_cast<std::uint32_t>(r);
+    std::vector<glm::uvec2> lists(count, glm::uvec2(0u));
+    std::vector<std::pair<double, std::uint32_t>> near;
+    for (std::size_t b = 0; b < count; ++b) {
+        const Block& block = partition.blocks[b];
+        near.clear();
+        for (std::size_t n = 0; n < count; ++n) {
+            const Block& other = partition.blocks[n];
+            const double distance = glm::length(other.centre - block.centre);
+            if (n != b && other.count > 0 && distance < block.radius + other.radius) near.emplace_back(distance, static_cast<std::uint32_t>(n));
+        }
+        const std::size_t kept = std::min(near.size(), kMaxOrderNeighbours);
+        std::partial_sort(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(kept), near.end());
+        lists[b] = glm::uvec2(static_cast<std::uint32_t>(lists.size()), static_cast<std::uint32_t>(kept));
+        for (std::size_t k = 0; k < kept; ++k) lists.emplace_back(near[k].second, rank[near[k].second]);
+    }
+    return lists;
+}
+
 namespace {
 
 double median(std::vector<double> values) {

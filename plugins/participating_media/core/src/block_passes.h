@@ -13,6 +13,7 @@ namespace nimbus::media {
 
 inline constexpr GLuint kImpostorItemsBinding = 6;
 inline constexpr GLuint kBlockTilesBinding = 7;
+inline constexpr GLuint kBlockNeighboursBinding = 10;  // shaders/media/block_order.glsl
 
 struct alignas(16) GpuBlockTile {
     glm::vec4 rect;          // NDC rectangle in the view
@@ -58,16 +59,18 @@ public:
     void uploadItems(const BlockPartition& partition, std::size_t onlyBlock);  // instancing: the prototype's particles
     void uploadTileSets(const std::vector<const BlockViewPlan*>& plans);
     void uploadDrawOrder(const std::vector<std::uint32_t>& blocks);
+    void uploadOrderNeighbours(const std::vector<glm::uvec2>& lists);  // overlappingBlockLists
     // The particles the lamps' slices take one by one (blocksSeenWideFromLamps), for BlockSlicePass.
     void uploadLampSliceParticles(const std::vector<std::uint32_t>& particles);
     void bindLampSliceParticles() const;
     std::size_t lampSliceParticleCount() const { return lampSliceParticles_; }
-    void bind(std::size_t tileSet) const;  // items, draw order and the tiles of one uploaded plan
+    void bind(std::size_t tileSet) const;  // items, draw order, order neighbours and the tiles of one uploaded plan
     std::size_t itemCount() const { return items_; }
 
 private:
-    gpu::Buffer itemBuffer_, tileBuffer_, orderBuffer_, lampSliceBuffer_;
-    std::size_t itemCapacity_ = 0, tileCapacity_ = 0, orderCapacity_ = 0, lampSliceCapacity_ = 0, items_ = 0, lampSliceParticles_ = 0;
+    gpu::Buffer itemBuffer_, tileBuffer_, orderBuffer_, neighbourBuffer_, lampSliceBuffer_;
+    std::size_t itemCapacity_ = 0, tileCapacity_ = 0, orderCapacity_ = 0, neighbourCapacity_ = 0, lampSliceCapacity_ = 0, items_ = 0,
+                lampSliceParticles_ = 0;
     std::vector<std::pair<std::size_t, std::size_t>> tileRanges_;  // (byte offset, bytes) per tile set
 };
 
@@ -129,11 +132,25 @@ bool sliceViewResolves(const render::GpuLightView& v, const glm::dvec3& centre, 
 std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& partition, const ParticleSet& particles,
                                                        const std::vector<render::GpuLightView>& views, const glm::dvec3& origin);
 
-// The composite build a block is drawn with: which of the two optional parts it needs.
+// Per block (1/0): whether it is composited with BLOCK_EXACT_SHADING (setting block_shading=exact),
+// where a mesh is seen inside the medium: it comes near one of `meshes` (blocksNearMeshes), or it
+// may lie in front of one that passes among the blocks (its rectangle in `cameraPlan` meets the mesh
+// box's on the screen, and it reaches nearer than the box's far side). Such a block is shaded at up
+// to 16 points placed by its own particles, with its overlapping neighbours' attenuation made exact
+// (shaders/media/block_order.glsl, overlappingBlockLists). The default smooth shading is cheaper, and
+// its errors and the compositing order's partly cancel; where a seam shows they did not on fresh
+// make_block_scenes.py seeds (9600/08, 9800/01, 9900/09: small dense particles shaded at uniform
+// points; 9700/08: big overlapping ones, dark from the order). llvmpipe pays for it in every pixel of
+// those draws: on cloud.gltf, whose wing crosses the whole cloud, a 320×180 frame took 4-13× longer.
+std::vector<std::uint8_t> blocksShadedExactly(const BlockPartition& partition, const std::vector<MeshBox>& meshes,
+                                              const BlockViewPlan& cameraPlan, const render::View& view);
+
+// The composite build a block is drawn with: which of the optional parts it needs.
 enum BlockCompositeBuild : std::uint8_t {
     kBlockPlain = 0,
     kBlockExactCut = 1,       // BLOCK_EXACT_CUT: a mesh comes near (blocksNearMeshes)
     kBlockOwnParticles = 2,   // BLOCK_OWN_PARTICLES: lumps the slices do not resolve (blocksOfUnresolvedParticles)
+    kBlockExactShading = 4,   // BLOCK_EXACT_SHADING: where a mesh is seen in the medium (blocksShadedExactly)
 };
 
 // Camera: impostors into an atlas, then blocks composited back to front into the media target.
@@ -149,7 +166,7 @@ public:
 private:
     LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for
 
-    std::unique_ptr<LocalLightPrograms> programs_[4];  // by BlockCompositeBuild bits
+    std::unique_ptr<LocalLightPrograms> programs_[8];  // by BlockCompositeBuild bits
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

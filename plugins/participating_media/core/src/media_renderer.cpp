@@ -20,6 +20,7 @@ struct BlockFrame {
     std::vector<BlockViewPlan> lightPlans;  // one per slice view
     BlockViewPlan cameraPlan;
     std::vector<std::uint32_t> backToFront;
+    std::vector<glm::uvec2> orderNeighbours;  // overlappingBlockLists
     std::vector<std::uint32_t> blockRankOf;  // per particle: its block's place in backToFront
     std::vector<std::uint8_t> wideFromLamps;         // per block: the lamps' slices take its particles one by one
     std::vector<std::uint32_t> lampSliceParticles;   // those particles
@@ -109,6 +110,7 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
             for (const BlockViewPlan& plan : frame.lightPlans) plans.push_back(&plan);
             blockBuffers_->uploadTileSets(plans);
             blockBuffers_->uploadDrawOrder(frame.backToFront);
+            blockBuffers_->uploadOrderNeighbours(frame.orderNeighbours);
             blockBuffers_->uploadLampSliceParticles(frame.lampSliceParticles);
             if (!anyLamp(context.input.lights)) return;
             frame.blockRankOf.assign(particles_->size(), 0u);
@@ -205,10 +207,18 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
                          [&](std::uint32_t a, std::uint32_t b) { return keys[a] > keys[b]; });
         if (!impostorRenderer_) impostorRenderer_ = std::make_unique<BlockImpostorRenderer>();
         if (!blockCompositePass_) blockCompositePass_ = std::make_unique<BlockCompositePass>();
-        std::vector<std::uint8_t> builds = blocksNearMeshes(frame.partition, meshInstanceBoxes(context.input));
+        const std::vector<MeshBox> meshes = meshInstanceBoxes(context.input);
+        std::vector<std::uint8_t> builds = blocksNearMeshes(frame.partition, meshes);
+        frame.orderNeighbours.clear();
         if (!frame.instanced) {  // an instance's particles are not listed
             const std::vector<std::uint8_t> own = blocksOfUnresolvedParticles(frame.partition, *particles_, context.transmittance.views, v.origin);
-            for (std::size_t b = 0; b < builds.size(); ++b) builds[b] = static_cast<std::uint8_t>(builds[b] | (own[b] ? kBlockOwnParticles : 0));
+            const std::vector<std::uint8_t> exact = settings_.exactBlocks ? blocksShadedExactly(frame.partition, meshes, frame.cameraPlan, v)
+                                                                          : std::vector<std::uint8_t>(builds.size(), 0);
+            for (std::size_t b = 0; b < builds.size(); ++b)
+                builds[b] = static_cast<std::uint8_t>(builds[b] | (own[b] ? kBlockOwnParticles : 0) | (exact[b] ? kBlockExactShading : 0));
+            if (std::find(exact.begin(), exact.end(), std::uint8_t{1}) != exact.end())
+                frame.orderNeighbours = overlappingBlockLists(frame.partition, frame.backToFront);
+            stats_.exactlyShadedBlocks = static_cast<int>(std::count(exact.begin(), exact.end(), std::uint8_t{1}));
         }
         media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, builds, *blockBuffers_, *buffer_,
                                          *impostorRenderer_, target);

@@ -33,6 +33,8 @@ struct MediaRenderSettings {
     int blocks = 0;            // blocks mode: block count; 0: automatic (block_partition.h)
     float impostorScale = 0.0f;  // blocks mode: impostor texels per covered pixel; 0: 0.5
     bool instancing = false;   // blocks mode: one block prototype instanced at every block (seed 000 §2's b + N/b)
+    bool exactBlocks = false;  // blocks mode: where a mesh is seen in the medium, blocks shaded from their own particles at
+                               // up to 16 points with the compositing order made exact (block_passes.h blocksShadedExactly)
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2 (see upsample.frag)
 };
@@ -43,6 +45,7 @@ struct MediaFrameStats {
     int sliceViews = 0;        // light views that got slices
     int blocks = 0;            // blocks mode: blocks this frame
     std::size_t lampSliceParticles = 0;  // blocks mode: particles the lamps' slices take one by one (block_partition.h)
+    int exactlyShadedBlocks = 0;         // blocks mode: blocks shaded exactly where a mesh is seen in the medium
     glm::ivec2 impostorAtlas{0};  // blocks mode: the camera's impostor atlas size
 };
 
