@@ -151,7 +151,7 @@ const int MAX_SHADING_PIECES = BLOCK_SHADING_PIECES;
 // its overlapping neighbours' (`neighbours`), 4 to 16. The order factor varies across a piece as
 // the neighbours' mass in front of it does, and its value at one point misses its mean (Jensen's
 // gap): s9700_04, a τ 9 cigar of 1.0-1.6 m particles, erred 1.89% in the seam band with 8 pieces,
-// 1.24% with 12 and 0.99% with 16 (billboards 1.16%).
+// 1.24% with 12 and 0.99% with 16 (billboards 1.16%; measured with the own particles' light).
 int exactShadingPieces(float tau, float neighbours) { return clamp(int(ceil((tau + neighbours) / 0.5)), 4, MAX_SHADING_PIECES); }
 
 // The source of a block's visible segment [front, back] of optical depth τ, whose kernels reach
@@ -188,7 +188,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     // 1.66% → 2.33%). The BLOCK_EXACT_SHADING build places the pieces and their points by the listed
     // particles too (`listed`), with the light from the slices: its pieces are thin enough that the
     // point's transmittance stands for the piece's (s9700_04's seam band 2.73% at uniform points,
-    // 1.30% at the listed ones; 0.99% with the own particles' light too, at three times the cost).
+    // 1.30% at the listed ones; 0.99% with the own particles' light too, which walks them again per point).
     bool own = kOwnParticles && items.y > 0;
     bool listed = (kOwnParticles || kExactShading) && items.y > 0;
     vec2 pieceSpan[MAX_SHADING_PIECES];

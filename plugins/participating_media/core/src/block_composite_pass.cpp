@@ -107,13 +107,14 @@ glm::dvec4 screenRectangle(const MeshBox& box, const render::View& view) {
 
 std::vector<std::uint8_t> blocksShadedExactly(const BlockPartition& partition, const std::vector<MeshBox>& meshes,
                                               const BlockViewPlan& cameraPlan, const render::View& view) {
-    std::vector<std::uint8_t> exact = blocksNearMeshes(partition, meshes);
-    // The meshes that pass among the blocks: those some block comes near, one mesh at a time.
+    std::vector<std::uint8_t> exact(partition.blocks.size(), 0);
+    // One mesh at a time: the blocks near it, and whether it passes among the blocks at all.
     std::vector<glm::dvec4> rects;
     std::vector<double> farthest;  // a mesh box's farthest distance from the eye
     for (const MeshBox& box : meshes) {
         const std::vector<std::uint8_t> near = blocksNearMeshes(partition, {box});
         if (std::find(near.begin(), near.end(), std::uint8_t{1}) == near.end()) continue;
+        for (std::size_t b = 0; b < exact.size(); ++b) exact[b] |= near[b];
         rects.push_back(screenRectangle(box, view));
         double hull = 0.0;
         for (int k = 0; k < 3; ++k) hull += box.half[k] * box.half[k];
