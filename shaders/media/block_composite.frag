@@ -99,7 +99,9 @@ void main() {
     }
 #endif
 #ifdef BLOCK_EXACT_SHADING
-    float neighbours = gatherOrderNeighbours(vBlock.x, vBlock.y, ndc, tSurface, uImpostorDepths, uImpostorMoments);
+    // Where blockSegmentSource's shading points lie: [front, back], widened by the tails of a profile with spread.
+    vec2 span = profile.deviation > 0.0 ? vec2(profile.front - tails.x, profile.back + tails.y) : vec2(profile.front, profile.back);
+    float neighbours = gatherOrderNeighbours(vBlock.x, vBlock.y, ndc, tSurface, span, uImpostorDepths, uImpostorMoments);
     int pieces = exactShadingPieces(tau, neighbours);
 #else
     int pieces = BLOCK_SHADING_PIECES;

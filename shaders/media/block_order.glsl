@@ -10,10 +10,13 @@
 layout(std430, binding = 10) readonly buffer BlockNeighbours { uvec2 blockNeighbours[]; };  // per block (first, count), then (block, rank)
 
 const int MAX_ORDER_NEIGHBOURS = 32;  // block_partition.h kMaxOrderNeighbours
+
+// The neighbours whose share in front changes across the block; the others add a constant.
 int orderNeighbourCount = 0;
-BlockProfile orderProfile[MAX_ORDER_NEIGHBOURS];
+ProfileCdf orderProfile[MAX_ORDER_NEIGHBOURS];
 float orderTau[MAX_ORDER_NEIGHBOURS];
 float orderApplied[MAX_ORDER_NEIGHBOURS];  // the share of orderTau the blend applies to this block
+float orderConstant = 0.0;                 // Σ τ·(applied − share in front) of the others
 float orderEnd = 1e30;                     // the ray ends at the opaque surface
 
 // The ray distance a camera tile's depth moments are taken about (block_data.glsl tileMomentOrigin).
@@ -21,10 +24,13 @@ float cameraMomentOrigin(BlockTile tile) {
     return frameOrthographic() ? dot(tile.centreRadius.xyz, frame.cameraForward.xyz) : length(tile.centreRadius.xyz);
 }
 
-// Reads block `block`'s neighbours at `ndc` (its rank in the draw order: `rank`); returns the sum
-// of their optical depth along the ray.
-float gatherOrderNeighbours(int block, int rank, vec2 ndc, float tSurface, sampler2D depths, sampler2D moments) {
+// Reads block `block`'s neighbours at `ndc` (its rank in the draw order: `rank`; its shading points
+// lie in `span`); returns their optical depth along the ray within `span`, where the factor varies
+// (counting all of it: the same seam band errors on the 26 hardest scenes within ±0.13%, and
+// cloud.gltf in exact took 18% longer).
+float gatherOrderNeighbours(int block, int rank, vec2 ndc, float tSurface, vec2 span, sampler2D depths, sampler2D moments) {
     orderNeighbourCount = 0;
+    orderConstant = 0.0;
     orderEnd = tSurface;
     float total = 0.0;
     uvec2 header = blockNeighbours[block];
@@ -45,11 +51,18 @@ float gatherOrderNeighbours(int block, int rank, vec2 ndc, float tSurface, sampl
             profile.front -= reach;
             profile.back += reach;
         }
+        ProfileCdf cdf = profileCdf(profile);
         bool drawnAfter = int(entry.y) > rank;
-        orderApplied[orderNeighbourCount] = drawnAfter ? (tSurface < s.back + reach ? profileMassBefore(profile, tSurface) : 1.0) : 0.0;
-        orderProfile[orderNeighbourCount] = profile;
+        float applied = drawnAfter ? (tSurface < s.back + reach ? cdfMassBefore(cdf, tSurface) : 1.0) : 0.0;
+        float first = cdfMassBefore(cdf, min(span.x, tSurface)), last = cdfMassBefore(cdf, min(span.y, tSurface));
+        total += s.tau * (last - first);
+        if (first == last) {  // wholly in front of the shading points, or wholly behind them
+            orderConstant += s.tau * (applied - first);
+            continue;
+        }
+        orderApplied[orderNeighbourCount] = applied;
+        orderProfile[orderNeighbourCount] = cdf;
         orderTau[orderNeighbourCount] = s.tau;
-        total += s.tau;
         ++orderNeighbourCount;
     }
     return total;
@@ -57,7 +70,7 @@ float gatherOrderNeighbours(int block, int rank, vec2 ndc, float tSurface, sampl
 
 // Capped as lampOrderCorrection is (MAX_LAMP_LOG_FACTOR says why).
 float blockOrderLogFactor(float t) {
-    float sum = 0.0;
-    for (int k = 0; k < orderNeighbourCount; ++k) sum += orderTau[k] * (orderApplied[k] - profileMassBefore(orderProfile[k], min(t, orderEnd)));
+    float sum = orderConstant;
+    for (int k = 0; k < orderNeighbourCount; ++k) sum += orderTau[k] * (orderApplied[k] - cdfMassBefore(orderProfile[k], min(t, orderEnd)));
     return min(sum, MAX_LAMP_LOG_FACTOR);
 }
