@@ -17,7 +17,7 @@ namespace nimbus::sandbox {
 namespace {
 
 // Every key a configuration may set; each is cleared before the next configuration.
-const char* const kSweptKeys[] = {"mode", "slices", "blocks", "impostor_scale", "instancing", "media_scale", "soft_particles", "layer_light"};
+const char* const kSweptKeys[] = {"mode", "slices", "blocks", "impostor_scale", "instancing", "media_scale", "soft_particles", "layer_light", "block_shading"};
 
 bool isMediaPass(const std::string& name) {
     return name == "light_slices" || name.rfind("media_", 0) == 0 || name.rfind("block_", 0) == 0;
@@ -52,6 +52,9 @@ std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, cons
     add("blocks slices=8", {{"mode", "blocks"}, {"slices", "8"}});
     add("blocks instancing", {{"mode", "blocks"}, {"instancing", "on"}});
     add("blocks media_scale=0.5", {{"mode", "blocks"}, {"media_scale", "0.5"}});
+    // Changes only the blocks where a mesh is seen inside the medium (blocksShadedExactly): the same
+    // frame as `blocks` on a scene without one.
+    add("blocks block_shading=exact", {{"mode", "blocks"}, {"block_shading", "exact"}});
     return sweep;
 }
 
