@@ -28,17 +28,6 @@ flat in ivec2 vBlock;  // x: the block, y: its rank in the back-to-front order
 
 layout(location = 0) out vec4 outColor;
 
-// The share of the block's optical depth along the ray that lies in front of ray distance t, from
-// its own particles (the exact kernels, as the reference integrates them). The impostor's depth
-// profile is a two-moment fit: where the mesh cuts a block of several particles it misplaced the
-// cut by up to a particle (block_scene_01's seam band: 4.12% with the profile, 3.82% with this,
-// measured with the slice counts of the time). Negative when the block's particles are not listed.
-float listedMassBefore(ivec2 items, vec3 origin, vec3 dir, float t) {
-    if (items.y <= 0) return -1.0;
-    float total = listedOpticalDepth(items, origin, dir, 1e30);
-    return total > 0.0 ? clamp(listedOpticalDepth(items, origin, dir, t) / total, 0.0, 1.0) : -1.0;
-}
-
 void main() {
     BlockTile tile = blockTiles[vBlock.x];
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
@@ -101,7 +90,7 @@ void main() {
 #ifdef BLOCK_EXACT_SHADING
     // Where blockSegmentSource's shading points lie: [front, back], widened by the tails of a profile with spread.
     vec2 span = profile.deviation > 0.0 ? vec2(profile.front - tails.x, profile.back + tails.y) : vec2(profile.front, profile.back);
-    float neighbours = gatherOrderNeighbours(vBlock.x, vBlock.y, ndc, tSurface, span, uImpostorDepths, uImpostorMoments);
+    float neighbours = gatherOrderNeighbours(vBlock.x, vBlock.y, ndc, tSurface, span, origin, dir, uImpostorDepths, uImpostorMoments);
     int pieces = exactShadingPieces(tau, neighbours);
 #else
     int pieces = BLOCK_SHADING_PIECES;

@@ -43,6 +43,17 @@ float listedOpticalDepth(ivec2 items, vec3 origin, vec3 dir, float t) {
     return sum;
 }
 
+// The share of the block's optical depth along the ray that lies in front of ray distance t, from
+// its own particles (the exact kernels, as the reference integrates them). The impostor's depth
+// profile is a two-moment fit: where the mesh cuts a block of several particles it misplaced the
+// cut by up to a particle (block_scene_01's seam band: 4.12% with the profile, 3.82% with this,
+// measured with the slice counts of the time). Negative when the block's particles are not listed.
+float listedMassBefore(ivec2 items, vec3 origin, vec3 dir, float t) {
+    if (items.y <= 0) return -1.0;
+    float total = listedOpticalDepth(items, origin, dir, 1e30);
+    return total > 0.0 ? clamp(listedOpticalDepth(items, origin, dir, t) / total, 0.0, 1.0) : -1.0;
+}
+
 // A profile's share of mass in front of ray distance t, with the erf at its ends taken once: the
 // exact build's order factor (block_order.glsl) reads its neighbours' at every shading point.
 struct ProfileCdf {
