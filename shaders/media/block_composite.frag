@@ -88,8 +88,8 @@ void main() {
     }
 #endif
 #ifdef BLOCK_EXACT_SHADING
-    // Where blockSegmentSource's shading points lie: [front, back], widened by the tails of a profile with spread.
-    vec2 span = profile.deviation > 0.0 ? vec2(profile.front - tails.x, profile.back + tails.y) : vec2(profile.front, profile.back);
+    BlockProfile shaded = widenedByTails(profile, tails);  // where blockSegmentSource's shading points lie
+    vec2 span = vec2(shaded.front, shaded.back);
     float neighbours = gatherOrderNeighbours(vBlock.x, vBlock.y, ndc, tSurface, span, origin, dir, uImpostorDepths, uImpostorMoments);
     int pieces = exactShadingPieces(tau, neighbours);
 #else

@@ -82,6 +82,16 @@ float cdfMassBefore(ProfileCdf c, float t) {
     return (t - c.front) / (c.back - c.front);
 }
 
+// The profile reaching `tails` further in front and behind, where its kernels' tails lie past
+// [front, back]; a profile without spread (uniform) keeps its ends.
+BlockProfile widenedByTails(BlockProfile p, vec2 tails) {
+    if (p.deviation > 0.0) {
+        p.front -= tails.x;
+        p.back += tails.y;
+    }
+    return p;
+}
+
 // Share of the profile's mass in front of ray distance t.
 float profileMassBefore(BlockProfile p, float t) {
     if (t <= p.front) return 0.0;
@@ -236,11 +246,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     // The kernels' tails reach past [front, back] (which holds each particle's ±√3·R/3): where a
     // shadow boundary crosses them, the lit share counts them, as the reference does (seed 19
     // unseen variant 9, a ground through 4–8 mm particles: blocks 18.6% → 6.5%).
-    BlockProfile wide = profile;
-    if (profile.deviation > 0.0) {
-        wide.front -= tails.x;
-        wide.back += tails.y;
-    }
+    BlockProfile wide = widenedByTails(profile, tails);
     // Piece k: its extent, shading point and weight, the same for every light. Its weight is its own
     // opacity behind the pieces in front of it, by the profile's mass in it (equal shares put a dense
     // core's light in its thin tails).

@@ -59,10 +59,7 @@ float gatherOrderNeighbours(int block, int rank, vec2 ndc, float tSurface, vec2 
         BlockProfile profile = blockProfile(s.front, s.back, cameraMomentOrigin(tile), s.sums1.xy / s.tau);
         // The kernels' tails reach past [front, back]: cut there, the profile put a neighbour's mass
         // behind a point it covers, and the factor brightened (s9700_08: 2.41% bright, 0.87% with the tails).
-        if (profile.deviation > 0.0) {
-            profile.front -= reach;
-            profile.back += reach;
-        }
+        profile = widenedByTails(profile, vec2(reach));
         ProfileCdf cdf = profileCdf(profile);
         bool drawnAfter = int(entry.y) > rank;
         float applied = drawnAfter ? (tSurface < s.back + reach ? drawnShareBefore(tile, cdf, origin, dir, tSurface) : 1.0) : 0.0;

@@ -141,7 +141,8 @@ std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& part
 // its errors and the compositing order's partly cancel; where a seam shows they did not on fresh
 // make_block_scenes.py seeds (9600/08, 9800/01, 9900/09: small dense particles shaded at uniform
 // points; 9700/08: big overlapping ones, dark from the order). llvmpipe pays for it in every pixel of
-// those draws: on cloud.gltf, whose wing crosses the whole cloud, a 320×180 render took about 35 s, not 3 s.
+// those draws: cloud.gltf, whose wing crosses the whole cloud, composites 7.5× slower than smooth
+// (docs/PERFORMANCE.md). Not with instancing: an instance's particles are not listed.
 std::vector<std::uint8_t> blocksShadedExactly(const BlockPartition& partition, const std::vector<MeshBox>& meshes,
                                               const BlockViewPlan& cameraPlan, const render::View& view);
 
