@@ -15,14 +15,21 @@
 #include "media/block_data.glsl"
 #include "media/block_lighting.glsl"
 #include "media/block_order.glsl"
+#include "media/block_seam.glsl"
 
 layout(binding = 3) uniform sampler2D uSceneDepth;
 layout(binding = 5) uniform sampler2D uImpostorDepths;
 layout(binding = 6) uniform sampler2D uImpostorSums1;
 layout(binding = 7) uniform sampler2D uImpostorSums2;
 layout(binding = 8) uniform sampler2D uImpostorMoments;  // τ·mean, τ·(variance + mean²) of the depth along the ray
+layout(binding = 9) uniform sampler2D uSeamMask;         // media/block_seam.glsl; read where uSeamPart is not 0
 
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
+// Which texels this draw shades (block_composite_pass.cpp draws the blocks of a seam twice, once
+// per part): 0 all; 1 only those off the seam (seamWeight 0); 2 only those near it, where the
+// BLOCK_EXACT_SHADING build shades exactly, mixed with the smooth shading as seamWeight says.
+layout(location = 3) uniform int uSeamPart;
+layout(location = 5) uniform int uSeamCell;  // media texels per seam mask texel, per axis
 
 flat in ivec2 vBlock;  // x: the block, y: its rank in the back-to-front order
 
@@ -32,6 +39,8 @@ void main() {
     BlockTile tile = blockTiles[vBlock.x];
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
     vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
+    float seam = uSeamPart != 0 ? seamWeight(uSeamMask, gl_FragCoord.xy, uSeamCell) : 1.0;
+    if (uSeamPart == 1 ? seam > 0.0 : seam <= 0.0) discard;  // the other draw's texel
     ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, uImpostorMoments, 3, tile, tileTexel(tile, ndc));
     if (!(s.tau > 0.0)) discard;
     // An instance of the prototype sits farther or nearer than the prototype the tile was made for.
@@ -87,14 +96,21 @@ void main() {
         profile.listed = items;
     }
 #endif
+    vec3 source = vec3(0.0);
 #ifdef BLOCK_EXACT_SHADING
     BlockProfile shaded = widenedByTails(profile, tails);  // where blockSegmentSource's shading points lie
     vec2 span = vec2(shaded.front, shaded.back);
     float neighbours = gatherOrderNeighbours(vBlock.x, vBlock.y, ndc, tSurface, span, origin, dir, uImpostorDepths, uImpostorMoments);
-    int pieces = exactShadingPieces(tau, neighbours);
+    // The exact shading, and where the seam's weight falls off, the smooth one too (a loop, not two
+    // calls: one copy of blockSegmentSource's code).
+    for (int part = 0; part < (seam < 1.0 ? 2 : 1); ++part) {
+        bool exact = part == 0;
+        int pieces = exact ? exactShadingPieces(tau, neighbours) : BLOCK_SHADING_PIECES;
+        source += (exact ? seam : 1.0 - seam) *
+                  blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer, pieces, exact);
+    }
 #else
-    int pieces = BLOCK_SHADING_PIECES;
+    source = blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer, BLOCK_SHADING_PIECES, false);
 #endif
-    vec3 source = blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer, pieces);
     outColor = vec4(source * alpha, alpha);
 }

@@ -22,6 +22,11 @@ float tileMomentOrigin(BlockTile tile, mat4 view, bool perspective, vec3 eye) {
     return perspective ? length(tile.centreRadius.xyz - eye) : -(view * vec4(tile.centreRadius.xyz, 1.0)).z;
 }
 
+// How far a block's kernels reach past the [front, back] its impostor holds (each particle's
+// ±√3·R/3, block_impostors.frag): R(1 − 1/√3), with 1.5× the block's mean radius for its largest
+// members (as block_composite.frag cuts a block at a surface).
+float blockKernelReach(float meanRadius) { return (1.0 - 0.57735027) * meanRadius * 1.5; }
+
 // How far beyond a particle's silhouette, in tile texels, its impostor quad reaches: more than the
 // √2 texels from a pixel centre to the farthest texel of its bilinear read. A tile on the pixel
 // grid needs none: each pixel reads its own texel.

@@ -33,11 +33,6 @@ struct BlockLightProfile {
     float hi;
 };
 
-// How far a block's kernels reach past the [front, back] its impostor holds (each particle's
-// ±√3·R/3, block_impostors.frag): R(1 − 1/√3), with 1.5× the block's mean radius for its largest
-// members (as block_composite.frag cuts a block at a surface).
-float blockKernelReach(float meanRadius) { return (1.0 - 0.57735027) * meanRadius * 1.5; }
-
 // `mean` and `deviation` of the block's mass along the ray (ray distance from its start) and its
 // impostor's [front, back]; `fromLight`: the ray starts at the light (a perspective view). The
 // block's mass lies within [front − reach, back + reach], and a normal fitted to its moments alone

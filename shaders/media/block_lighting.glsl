@@ -237,9 +237,10 @@ float tableShadingPoint(float node[MAX_LISTED_NODES], float depth[MAX_LISTED_NOD
 // with the mesh visibility taken over the piece; point and spot lights near the segment or whose
 // cone's edge crosses it are integrated over the whole of it (blockLocalLightSegment: 1/d² across
 // a block spans far more than across one particle, and one shading point missed a lamp's glow by
-// up to 95%).
+// up to 95%). `exact` (the BLOCK_EXACT_SHADING build only): the pieces and their points from the
+// listed particles, and the compositing order corrected (blockOrderLogFactor).
 vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails, float tau, GpuParticle block, ivec2 items,
-                        LayerOrder layer, int pieces) {
+                        LayerOrder layer, int pieces, bool exact) {
     float t0 = profile.front, t1 = profile.back;
     float pieceLength = (t1 - t0) / float(pieces);
     float alpha = oneMinusExpNeg(tau);
@@ -257,12 +258,12 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     // seed 13 variant 09, reference 3.06) gave 0.10 shaded at the piece's uniform point with one
     // transmittance, 1.25 at the listed point, 3.33 with the layer integral (particles mode: 3.33).
     // A smooth block keeps both: the layer integral erred more there (stop 13: block_scene_05
-    // 1.66% → 2.33%). The BLOCK_EXACT_SHADING build places the pieces and their points by the listed
+    // 1.66% → 2.33%). The exact shading places the pieces and their points by the listed
     // particles too (`listed`), with the light from the slices: its pieces are thin enough that the
     // point's transmittance stands for the piece's (s9700_04's seam band 2.73% at uniform points,
     // 1.30% at the listed ones; 0.99% with the own particles' light too, which walks them again per point).
     bool own = kOwnParticles && items.y > 0;
-    bool listed = (kOwnParticles || kExactShading) && items.y > 0;
+    bool listed = (kOwnParticles || exact) && items.y > 0;
     vec2 pieceSpan[MAX_SHADING_PIECES];
     float pieceAt[MAX_SHADING_PIECES], pieceWeight[MAX_SHADING_PIECES], pieceTau[MAX_SHADING_PIECES];
     for (int k = 0; k < pieces; ++k) {
@@ -302,14 +303,15 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     // for every light, the ambient and the emission alike.
     float orderFactor[MAX_SHADING_PIECES];
     float weighted = 1.0;  // the pieces' weights times their order factors
-#ifdef BLOCK_EXACT_SHADING
-    weighted = 0.0;
-    for (int k = 0; k < pieces; ++k) {
-        orderFactor[k] = exp(blockOrderLogFactor(pieceAt[k]));
-        weighted += pieceWeight[k] * orderFactor[k];
-    }
-#else
     for (int k = 0; k < pieces; ++k) orderFactor[k] = 1.0;
+#ifdef BLOCK_EXACT_SHADING
+    if (exact) {
+        weighted = 0.0;
+        for (int k = 0; k < pieces; ++k) {
+            orderFactor[k] = exp(blockOrderLogFactor(pieceAt[k]));
+            weighted += pieceWeight[k] * orderFactor[k];
+        }
+    }
 #endif
     vec3 scattered = frame.ambient.rgb * weighted;
     float radius = block.positionRadius.w;

@@ -19,11 +19,6 @@ const bool kOwnParticles = true;
 #else
 const bool kOwnParticles = false;
 #endif
-#ifdef BLOCK_EXACT_SHADING
-const bool kExactShading = true;
-#else
-const bool kExactShading = false;
-#endif
 
 // x: what viewOpticalDepth(v, p) holds of the block's particles `items` (block_slices.frag, read
 // back as the slices are); y: their exact optical depth from the light to p. `centreRadius`: the

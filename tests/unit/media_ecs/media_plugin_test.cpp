@@ -195,6 +195,7 @@ TEST_F(MediaPluginTest, ABadMediaExtensionLeavesNoEntityBehind) {
     variant("unknown emitter key", [](nlohmann::json& j) { j["emitter"] = {{"preset", "smoke"}, {"sped", 1.0}}; });
     variant("bad emitter value", [](nlohmann::json& j) { j["emitter"] = {{"lifetime", 0.0}}; });
     variant("unknown render mode", [](nlohmann::json& j) { j["render"] = {{"mode", "voxels"}}; });
+    variant("unknown block shading", [](nlohmann::json& j) { j["render"] = {{"block_shading", "exactly"}}; });
     variant("unknown node key", [](nlohmann::json& j) { j["fog"] = true; });
 
     for (const auto& [what, bad] : cases) {

@@ -16,7 +16,10 @@ namespace nimbus::media {
 
 inline constexpr GLuint kShadowDepthUnit = 4;
 inline constexpr GLuint kImpostorDepthsUnit = 5;
+inline constexpr GLuint kSeamMaskUnit = 9;
 inline constexpr GLint kFirstRankLocation = 2;  // block_composite.vert uFirstRank
+inline constexpr GLint kSeamPartLocation = 3;   // block_composite.frag uSeamPart
+inline constexpr GLint kSeamCellLocation = 5;   // block_composite.frag uSeamCell
 
 std::vector<MeshBox> meshInstanceBoxes(const render::FrameInput& input) {
     std::vector<MeshBox> boxes;
@@ -176,7 +179,7 @@ LocalLightPrograms& BlockCompositePass::programs(std::uint8_t build) {
 
 render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
                                                const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
-                                               const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
+                                               bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                                const BlockImpostorRenderer& impostors, const MediaTarget& target) {
     struct Impostors {
         render::ResourceHandle depths, sums1, sums2, moments;
@@ -197,24 +200,50 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
         });
 
     struct Composite {
-        render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments;
+        render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments, seamMask;
     };
     const int w = target.size.x, h = target.size.y;
     // Runs of consecutive ranks that want the same build, drawn in order.
     struct Run {
-        GLint first;
-        GLsizei count;
-        const gpu::Program* program;
+        BlockRankRun ranks;
+        std::uint8_t build;
     };
     std::vector<Run> runs;
-    std::uint8_t runBuild = 0;
     for (std::size_t r = 0; r < backToFront.size(); ++r) {
         const std::uint8_t build = builds[backToFront[r]] & 7;
-        if (runs.empty() || build != runBuild) {
-            runs.push_back({static_cast<GLint>(r), 0, &programs(build).forLights(context.input.lights)});
-            runBuild = build;
+        if (runs.empty() || build != runs.back().build) runs.push_back({{static_cast<GLint>(r), 0}, build});
+        ++runs.back().ranks.count;
+    }
+    // With seamOnly, the mask says where the blocks a mesh comes near are cut, and an exactly shaded
+    // run is drawn twice: smoothly off the seam, then exactly near it. At each texel one of the two
+    // draws writes every block of the run, so the back-to-front order holds.
+    std::vector<BlockRankRun> cutRuns;
+    bool seamRuns = false;
+    for (const Run& run : runs) {
+        if (run.build & kBlockExactCut) cutRuns.push_back(run.ranks);
+        seamRuns = seamRuns || (run.build & kBlockExactShading);
+    }
+    render::ResourceHandle seamMask;
+    const int seamCell = seamMaskCell(target.size);
+    if (seamOnly && seamRuns && !cutRuns.empty()) {
+        if (!seamMask_) seamMask_ = std::make_unique<BlockSeamMaskPass>();
+        seamMask = seamMask_->add(graph, context, std::move(cutRuns), blocks, made.depths, target, seamCell);
+    }
+    // Each draw: its ranks, program and seam part (block_composite.frag uSeamPart).
+    struct Draw {
+        BlockRankRun ranks;
+        const gpu::Program* program;
+        GLint seamPart;
+    };
+    std::vector<Draw> draws;
+    for (const Run& run : runs) {
+        if (seamMask.valid() && (run.build & kBlockExactShading)) {
+            const auto smooth = static_cast<std::uint8_t>(run.build & ~kBlockExactShading);
+            draws.push_back({run.ranks, &programs(smooth).forLights(context.input.lights), 1});
+            draws.push_back({run.ranks, &programs(run.build).forLights(context.input.lights), 2});
+        } else {
+            draws.push_back({run.ranks, &programs(run.build).forLights(context.input.lights), 0});
         }
-        ++runs.back().count;
     }
     const auto& data = graph.addPass<Composite>(
         "media_blocks",
@@ -227,8 +256,10 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.sums1 = builder.read(made.sums1);
             d.sums2 = builder.read(made.sums2);
             d.moments = builder.read(made.moments);
+            if (seamMask.valid()) d.seamMask = builder.read(seamMask);
         },
-        [this, runs, &context, &blocks, &particles, w, h, scale = target.fullResScale](const render::PassResources& r, const Composite& d) {
+        [this, draws, &context, &blocks, &particles, w, h, seamCell, scale = target.fullResScale](const render::PassResources& r,
+                                                                                                 const Composite& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
             glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
@@ -236,7 +267,10 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glViewport(0, 0, w, h);
             const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
-            for (const Run& run : runs) glProgramUniform2f(run.program->id(), 1, scale.x, scale.y);
+            for (const Draw& draw : draws) {
+                glProgramUniform2f(draw.program->id(), 1, scale.x, scale.y);
+                glProgramUniform1i(draw.program->id(), kSeamCellLocation, seamCell);
+            }
             context.frameData->bind();
             blocks.bind(0);
             particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
@@ -248,17 +282,19 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             glBindTextureUnit(kImpostorDepthsUnit + 1, r.id(d.sums1));
             glBindTextureUnit(kImpostorDepthsUnit + 2, r.id(d.sums2));
             glBindTextureUnit(kImpostorDepthsUnit + 3, r.id(d.moments));
+            if (d.seamMask.valid()) glBindTextureUnit(kSeamMaskUnit, r.id(d.seamMask));
             glDisable(GL_DEPTH_TEST);
             glDisable(GL_CULL_FACE);
             glEnable(GL_BLEND);
             glBlendEquation(GL_FUNC_ADD);
             glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
             glBindVertexArray(vertexArray_.id());
-            for (const Run& run : runs) {
-                const GLuint program = run.program->id();
+            for (const Draw& draw : draws) {
+                const GLuint program = draw.program->id();
                 glUseProgram(program);
-                glProgramUniform1i(program, kFirstRankLocation, run.first);
-                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, run.count);
+                glProgramUniform1i(program, kFirstRankLocation, draw.ranks.first);
+                glProgramUniform1i(program, kSeamPartLocation, draw.seamPart);
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, draw.ranks.count);
             }
             glBindVertexArray(0);
             glDisable(GL_BLEND);

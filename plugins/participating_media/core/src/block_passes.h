@@ -132,17 +132,19 @@ bool sliceViewResolves(const render::GpuLightView& v, const glm::dvec3& centre, 
 std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& partition, const ParticleSet& particles,
                                                        const std::vector<render::GpuLightView>& views, const glm::dvec3& origin);
 
-// Per block (1/0): whether it is composited with BLOCK_EXACT_SHADING (setting block_shading=exact),
+// Per block (1/0): whether it is composited with BLOCK_EXACT_SHADING (block_shading seam or exact),
 // where a mesh is seen inside the medium: it comes near one of `meshes` (blocksNearMeshes), or it
 // may lie in front of one that passes among the blocks (its rectangle in `cameraPlan` meets the mesh
 // box's on the screen, and it reaches nearer than the box's far side). Such a block is shaded at up
 // to 16 points placed by its own particles, with its overlapping neighbours' attenuation made exact
-// (shaders/media/block_order.glsl, overlappingBlockLists). The default smooth shading is cheaper, and
-// its errors and the compositing order's partly cancel; where a seam shows they did not on fresh
-// make_block_scenes.py seeds (9600/08, 9800/01, 9900/09: small dense particles shaded at uniform
-// points; 9700/08: big overlapping ones, dark from the order). llvmpipe pays for it in every pixel of
-// those draws: cloud.gltf, whose wing crosses the whole cloud, composites 7.5× slower than smooth
-// (docs/PERFORMANCE.md). Not with instancing: an instance's particles are not listed.
+// (shaders/media/block_order.glsl, overlappingBlockLists): over its whole rectangle (exact), or
+// only near the texels where a mesh lies among the particles (seam, BlockSeamMaskPass). The default
+// smooth shading is cheaper, and its errors and the compositing order's partly cancel; where a seam
+// shows they did not on fresh make_block_scenes.py seeds (9600/08, 9800/01, 9900/09: small dense
+// particles shaded at uniform points; 9700/08: big overlapping ones, dark from the order). The
+// exact code costs about 7× the smooth per texel on llvmpipe: 16 lit points instead of two, each
+// with its mesh shadow search, and every neighbour's profile read at every texel (docs/PERFORMANCE.md).
+// Not with instancing: an instance's particles are not listed.
 std::vector<std::uint8_t> blocksShadedExactly(const BlockPartition& partition, const std::vector<MeshBox>& meshes,
                                               const BlockViewPlan& cameraPlan, const render::View& view);
 
@@ -154,20 +156,54 @@ enum BlockCompositeBuild : std::uint8_t {
     kBlockExactShading = 4,   // BLOCK_EXACT_SHADING: where a mesh is seen in the medium (blocksShadedExactly)
 };
 
+// Consecutive ranks of the camera's back-to-front order, drawn as one instanced draw.
+struct BlockRankRun {
+    GLint first = 0;
+    GLsizei count = 0;
+};
+
+// Media texels per seam mask texel, per axis, for a media target of `size`: about a 48th of its
+// shorter side, at least 4. The exact shading reaches half a cell past the texels where a mesh lies
+// in the medium and fades out over the next cell (shaders/media/block_seam.glsl seamWeight), so that
+// fade is as wide a share of the image at any resolution (a fixed 4 texels left a visible edge
+// where the smooth and exact shadings differ by 3%, as on cloud.gltf).
+int seamMaskCell(glm::ivec2 size);
+
+// The seam mask (shaders/media/block_seam.glsl): one R8 texel per cell of seamMaskCell² texels of
+// the media target, 1 where, at one of them, the opaque surface lies among the particles of a block
+// drawn by `runs` (within its impostor's [front − reach, back + reach]), i.e. where a mesh is seen
+// inside the medium. Draws the blocks' rectangles widened by a cell, one fragment per cell.
+//
+// Does not: widen the mask or smooth its edge (block_seam.glsl seamWeight does, where it is read).
+class BlockSeamMaskPass {
+public:
+    BlockSeamMaskPass();
+    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, std::vector<BlockRankRun> runs,
+                               const BlockGpuBuffers& blocks, render::ResourceHandle impostorDepths, const MediaTarget& target, int cell);
+
+private:
+    gpu::Program program_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
 // Camera: impostors into an atlas, then blocks composited back to front into the media target.
 class BlockCompositePass {
 public:
     BlockCompositePass();
     // The camera's plan is tile set 0 of `blocks`; `builds`: each block's BlockCompositeBuild bits.
+    // `seamOnly` (block_shading=seam): the BLOCK_EXACT_SHADING blocks are shaded exactly only near the
+    // texels where a mesh lies among the particles of the blocks a mesh comes near (BlockSeamMaskPass),
+    // and smoothly elsewhere, blended over a mask cell (block_seam.glsl seamWeight).
     render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
                                const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
-                               const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
+                               bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                const BlockImpostorRenderer& impostors, const MediaTarget& target);
 
 private:
     LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for
 
     std::unique_ptr<LocalLightPrograms> programs_[8];  // by BlockCompositeBuild bits
+    std::unique_ptr<BlockSeamMaskPass> seamMask_;      // made when a frame first needs it
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

@@ -212,7 +212,7 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
         frame.orderNeighbours.clear();
         if (!frame.instanced) {  // an instance's particles are not listed
             const std::vector<std::uint8_t> own = blocksOfUnresolvedParticles(frame.partition, *particles_, context.transmittance.views, v.origin);
-            const std::vector<std::uint8_t> exact = settings_.exactBlocks ? blocksShadedExactly(frame.partition, meshes, frame.cameraPlan, v)
+            const std::vector<std::uint8_t> exact = settings_.blockShading != BlockShading::Smooth ? blocksShadedExactly(frame.partition, meshes, frame.cameraPlan, v)
                                                                           : std::vector<std::uint8_t>(builds.size(), 0);
             for (std::size_t b = 0; b < builds.size(); ++b)
                 builds[b] = static_cast<std::uint8_t>(builds[b] | (own[b] ? kBlockOwnParticles : 0) | (exact[b] ? kBlockExactShading : 0));
@@ -220,8 +220,8 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
                 frame.orderNeighbours = overlappingBlockLists(frame.partition, frame.backToFront);
             stats_.exactlyShadedBlocks = static_cast<int>(std::count(exact.begin(), exact.end(), std::uint8_t{1}));
         }
-        media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, builds, *blockBuffers_, *buffer_,
-                                         *impostorRenderer_, target);
+        media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, builds,
+                                         settings_.blockShading == BlockShading::Seam, *blockBuffers_, *buffer_, *impostorRenderer_, target);
     } else {
         if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
         media = particlePass_->add(graph, context, *buffer_, {settings_.softParticles, settings_.layerLight}, target);

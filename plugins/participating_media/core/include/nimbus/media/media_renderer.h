@@ -17,6 +17,16 @@ namespace nimbus::media {
 
 enum class MediaMode { Particles, Blocks };
 
+// How blocks mode shades the blocks where a mesh is seen inside the medium (block_passes.h
+// blocksShadedExactly): exactly is at up to 16 points placed by their own particles, with the
+// compositing order of overlapping blocks corrected; smoothly is at two points of each block's
+// depth profile, as everywhere else.
+enum class BlockShading : std::uint8_t {
+    Smooth,  // smoothly everywhere
+    Seam,    // exactly near the texels where a mesh lies among the particles, smoothly elsewhere
+    Exact,   // exactly over those blocks' whole rectangles
+};
+
 // Parses "particles" or "blocks"; throws InputError naming the option for anything else.
 MediaMode parseMediaMode(const std::string& text, const std::string& origin = "--mode");
 const char* mediaModeName(MediaMode mode);
@@ -33,8 +43,7 @@ struct MediaRenderSettings {
     int blocks = 0;            // blocks mode: block count; 0: automatic (block_partition.h)
     float impostorScale = 0.0f;  // blocks mode: impostor texels per covered pixel; 0: 0.5
     bool instancing = false;   // blocks mode: one block prototype instanced at every block (seed 000 §2's b + N/b)
-    bool exactBlocks = false;  // blocks mode: where a mesh is seen in the medium, blocks shaded from their own particles at
-                               // up to 16 points with the compositing order made exact (block_passes.h blocksShadedExactly)
+    BlockShading blockShading = BlockShading::Smooth;  // blocks mode: where a mesh is seen in the medium
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2 (see upsample.frag)
 };
@@ -46,6 +55,7 @@ struct MediaFrameStats {
     int blocks = 0;            // blocks mode: blocks this frame
     std::size_t lampSliceParticles = 0;  // blocks mode: particles the lamps' slices take one by one (block_partition.h)
     int exactlyShadedBlocks = 0;         // blocks mode: blocks shaded exactly where a mesh is seen in the medium
+                                         // (block_shading=seam: near the seam only)
     glm::ivec2 impostorAtlas{0};  // blocks mode: the camera's impostor atlas size
 };
 
