@@ -26,8 +26,8 @@ COUNT = 10
 #   9700/07: a wing 0.6 m from a lamp, in front of a dense particle whose block lies behind it; the
 #            block's light impostor darkened the wing by 12% (block_partition.h kMaxLampImpostorSpread).
 #   9700/08: a tower of 1.0–1.6 m particles whose blocks overlap along the view, and 9800/01: blocks
-#            of about ten small dense particles in sunlight. The default smooth shading fails their
-#            seam band (the compositing order; uniform shading points); block_shading=exact passes.
+#            of about ten small dense particles in sunlight. block_shading=smooth fails their seam
+#            band (the compositing order; uniform shading points); the default, seam, passes.
 KEPT = [(9700, 7), (9700, 8), (9800, 1)]
 SHAPES = ["blob", "layer", "twin", "tower", "cigar"]
 # Central optical depth along a diameter, thin to moderately thick, spread over the scenes.

@@ -44,47 +44,57 @@ inline assets::RgbImage renderReference(const std::filesystem::path& scene, int 
     return media::reference::renderReference(inputs->inputs, settings);
 }
 
-// The seam band: pixels whose camera ray first hits a mesh of node `meshNode` at a point inside at
-// least one particle's sphere (where a particle's billboard plane can cut the mesh), dilated by
-// `dilate` pixels (Chebyshev). Row-major pixel indices.
-inline std::vector<std::size_t> seamBand(const std::filesystem::path& scene, int width, int height, const std::string& meshNode,
-                                         int dilate, std::size_t* seamPixels = nullptr) {
+// Per pixel (row-major, 1/0): whether its camera ray first hits a mesh of node `meshNode`, and
+// with `insideParticles`, at a point inside at least one particle's sphere (where a particle's
+// billboard plane can cut the mesh).
+inline std::vector<char> meshPixels(const std::filesystem::path& scene, int width, int height, const std::string& meshNode,
+                                    bool insideParticles) {
     sandbox::Session session({.scene = scene});
     const auto ref = sandbox::makeReferenceScene(session, "", width, height);
     const raycast::MeshRaycaster raycaster(session.scene(), ref->world);
     const media::reference::CameraFrame frame = media::reference::makeCameraFrame(ref->inputs.camera, width, height);
     const media::ParticleSet& particles = ref->particles;
-    std::vector<char> seam(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
-    std::size_t count = 0;
+    std::vector<char> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const media::reference::CameraRay ray = media::reference::cameraRay(frame, x, y);
             const auto hit = raycaster.closestHit(ray.origin, ray.direction, ray.meshNear, ray.meshFar);
             if (!hit || session.scene().nodes[static_cast<std::size_t>(hit->node)].name != meshNode) continue;
-            bool inside = false;
+            bool inside = !insideParticles;
             for (std::size_t i = 0; i < particles.size() && !inside; ++i) {
                 const double r = particles.radius[i];
                 inside = glm::dot(hit->position - particles.position[i], hit->position - particles.position[i]) < r * r;
             }
-            if (inside) {
-                seam[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = 1;
-                ++count;
-            }
+            pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = inside ? 1 : 0;
         }
-    if (seamPixels != nullptr) *seamPixels = count;
-    std::vector<std::size_t> band;
+    return pixels;
+}
+
+// The row-major indices of the pixels within `dilate` pixels (Chebyshev) of a set pixel of `pixels`.
+inline std::vector<std::size_t> dilatedPixels(const std::vector<char>& pixels, int width, int height, int dilate) {
+    std::vector<std::size_t> near;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            bool near = false;
-            for (int dy = -dilate; dy <= dilate && !near; ++dy)
-                for (int dx = -dilate; dx <= dilate && !near; ++dx) {
+            bool found = false;
+            for (int dy = -dilate; dy <= dilate && !found; ++dy)
+                for (int dx = -dilate; dx <= dilate && !found; ++dx) {
                     const int sx = x + dx, sy = y + dy;
-                    near = sx >= 0 && sy >= 0 && sx < width && sy < height &&
-                           seam[static_cast<std::size_t>(sy) * static_cast<std::size_t>(width) + static_cast<std::size_t>(sx)] != 0;
+                    found = sx >= 0 && sy >= 0 && sx < width && sy < height &&
+                            pixels[static_cast<std::size_t>(sy) * static_cast<std::size_t>(width) + static_cast<std::size_t>(sx)] != 0;
                 }
-            if (near) band.push_back(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
+            if (found) near.push_back(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
         }
-    return band;
+    return near;
+}
+
+// The seam band: pixels whose camera ray first hits a mesh of node `meshNode` at a point inside at
+// least one particle's sphere (where a particle's billboard plane can cut the mesh), dilated by
+// `dilate` pixels (Chebyshev). Row-major pixel indices.
+inline std::vector<std::size_t> seamBand(const std::filesystem::path& scene, int width, int height, const std::string& meshNode,
+                                         int dilate, std::size_t* seamPixels = nullptr) {
+    const std::vector<char> seam = meshPixels(scene, width, height, meshNode, true);
+    if (seamPixels != nullptr) *seamPixels = static_cast<std::size_t>(std::count(seam.begin(), seam.end(), char{1}));
+    return dilatedPixels(seam, width, height, dilate);
 }
 
 // image_metrics.h's rel_rmse over a subset of pixels: RMSE of linear RGB over those pixels / mean

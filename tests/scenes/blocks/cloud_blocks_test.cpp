@@ -1,7 +1,9 @@
 // Blocks mode (seed 000) on content/scenes/cloud.gltf — 500 large particles crossed by a thin red
 // wing — against the CPU reference: the whole image, the band of pixels where the wing cuts the
-// cloud (the seam billboards leave), a fixed block count, and repeatability.
+// cloud (the seam billboards leave), where block_shading=seam shades exactly, a fixed block count,
+// and repeatability.
 #include "../render_fixture.h"
+#include "block_passes.h"
 #include "blocks_scene_fixture.h"
 
 namespace nimbus::test {
@@ -46,6 +48,44 @@ TEST_F(CloudBlocksTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
     std::printf("seam band (%zu px): blocks %.4f, particles soft_particles=off %.4f, particles %.4f\n", band.size(), blocks,
                 billboards, soft);
     EXPECT_LT(blocks, billboards);
+}
+
+// block_shading=seam shades exactly (as block_shading=exact does the whole of each block where a
+// mesh is seen in the medium) only near the texels where the wing lies among a block's particles
+// (block_seam_mask_pass.cpp), fading to the smooth shading over the next mask cell
+// (shaders/media/block_seam.glsl). So in the seam band its frame is exact's to the bit, and more
+// than three cells from the wing, smooth's (the default). Smooth and exact differ by up to 3%
+// across this cloud, so both comparisons can fail.
+TEST_F(CloudBlocksTest, SeamShadingIsExactAtTheSeamAndSmoothAwayFromIt) {
+    const assets::RgbImage seam = renderRealtime(kCloud, kWidth, kHeight, {"mode=blocks", "block_shading=seam"});
+    const assets::RgbImage exact = renderRealtime(kCloud, kWidth, kHeight, {"mode=blocks", "block_shading=exact"});
+    const assets::RgbImage smooth = renderRealtime(kCloud, kWidth, kHeight, {"mode=blocks"});
+    const std::vector<std::size_t> band = seamBand(kCloud, kWidth, kHeight, "wing", 2);
+    const int cell = media::seamMaskCell(glm::ivec2(kWidth, kHeight));
+    const std::vector<std::size_t> nearWing = dilatedPixels(meshPixels(kCloud, kWidth, kHeight, "wing", false), kWidth, kHeight, 3 * cell);
+    std::vector<char> isNear(static_cast<std::size_t>(kWidth) * kHeight, 0);
+    for (const std::size_t k : nearWing) isNear[k] = 1;
+    const auto differ = [](const assets::RgbImage& a, const assets::RgbImage& b, std::size_t k) {
+        return a.rgb[3 * k] != b.rgb[3 * k] || a.rgb[3 * k + 1] != b.rgb[3 * k + 1] || a.rgb[3 * k + 2] != b.rgb[3 * k + 2];
+    };
+    std::size_t bandNotExact = 0, bandSmoothDiffers = 0, farNotSmooth = 0, far = 0, farExactDiffers = 0;
+    for (const std::size_t k : band) {
+        bandNotExact += differ(seam, exact, k);
+        bandSmoothDiffers += differ(smooth, exact, k);
+    }
+    for (std::size_t k = 0; k < isNear.size(); ++k) {
+        if (isNear[k]) continue;
+        ++far;
+        farNotSmooth += differ(seam, smooth, k);
+        farExactDiffers += differ(exact, smooth, k);
+    }
+    std::printf("seam band %zu px: %zu not exact's (smooth differs at %zu); %zu px more than %d px from the wing: %zu not smooth's "
+                "(exact differs at %zu)\n",
+                band.size(), bandNotExact, bandSmoothDiffers, far, 3 * cell, farNotSmooth, farExactDiffers);
+    EXPECT_GT(bandSmoothDiffers, band.size() / 2) << "smooth and exact must differ in the band for this test to mean anything";
+    EXPECT_GT(farExactDiffers, 1000u) << "smooth and exact must differ away from the wing for this test to mean anything";
+    EXPECT_EQ(bandNotExact, 0u);
+    EXPECT_EQ(farNotSmooth, 0u);
 }
 
 TEST_F(CloudBlocksTest, FixedBlockCountIsHonoured) {
