@@ -128,6 +128,19 @@ def campfire():
     return b
 
 
+def cumulus_aircraft():
+    """Issue 5's benchmark cloud with an airliner-sized aircraft flying through it: the 1280x720
+    comparison with a mesh inside the medium, where blocks shade the seam exactly (block_shading=seam)."""
+    b = cumulus()
+    hull = b.material("hull", (0.75, 0.76, 0.78))
+    # Level, heading 30° off the view, its tail out of the main blob and a wing tip out of its far side.
+    aircraft = b.node("aircraft", translation=(-3.0, 9.2, 1.0), rotation=(0, 0.258819, 0, 0.9659258))
+    fuselage = b.node("fuselage", mesh=b.box_mesh("fuselage", (9.0, 1.0, 1.0), hull), root=False)
+    wing = b.node("wing", translation=(0.5, 0, 0), mesh=b.box_mesh("wing", (2.2, 0.15, 11.0), hull), root=False)
+    b.doc["nodes"][aircraft]["children"] = [fuselage, wing]
+    return b
+
+
 def jet():
     """Issue 4: a jet crossing the sky (glTF animation) leaving a vapour trail from its tail."""
     b = Builder()
@@ -167,7 +180,8 @@ def explosion():
     return b
 
 
-SCENES = {"demo": demo, "cloud": cloud, "cumulus": cumulus, "smoke": smoke, "campfire": campfire, "jet": jet, "explosion": explosion}
+SCENES = {"demo": demo, "cloud": cloud, "cumulus": cumulus, "cumulus_aircraft": cumulus_aircraft, "smoke": smoke, "campfire": campfire,
+          "jet": jet, "explosion": explosion}
 
 # Times at which the scenes are rendered for tests and the demo (emitters need time to fill).
 TIMES = {"smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8}
