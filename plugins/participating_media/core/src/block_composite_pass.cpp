@@ -237,12 +237,14 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
     };
     std::vector<Draw> draws;
     for (const Run& run : runs) {
-        if (seamMask.valid() && (run.build & kBlockExactShading)) {
-            const auto smooth = static_cast<std::uint8_t>(run.build & ~kBlockExactShading);
+        const auto smooth = static_cast<std::uint8_t>(run.build & ~kBlockExactShading);
+        if (!seamOnly || !(run.build & kBlockExactShading)) {
+            draws.push_back({run.ranks, &programs(run.build).forLights(context.input.lights), 0});
+        } else if (seamMask.valid()) {
             draws.push_back({run.ranks, &programs(smooth).forLights(context.input.lights), 1});
             draws.push_back({run.ranks, &programs(run.build).forLights(context.input.lights), 2});
-        } else {
-            draws.push_back({run.ranks, &programs(run.build).forLights(context.input.lights), 0});
+        } else {  // no block a mesh comes near: no seam
+            draws.push_back({run.ranks, &programs(smooth).forLights(context.input.lights), 0});
         }
     }
     const auto& data = graph.addPass<Composite>(
