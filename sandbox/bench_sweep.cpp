@@ -53,8 +53,8 @@ std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, cons
     add("blocks instancing", {{"mode", "blocks"}, {"instancing", "on"}});
     add("blocks media_scale=0.5", {{"mode", "blocks"}, {"media_scale", "0.5"}});
     // Change only the blocks where a mesh is seen inside the medium (blocksShadedExactly): the same
-    // frame as `blocks` (block_shading=smooth) on a scene without one.
-    add("blocks block_shading=seam", {{"mode", "blocks"}, {"block_shading", "seam"}});
+    // frame as `blocks` (block_shading=seam) on a scene without one.
+    add("blocks block_shading=smooth", {{"mode", "blocks"}, {"block_shading", "smooth"}});
     add("blocks block_shading=exact", {{"mode", "blocks"}, {"block_shading", "exact"}});
     return sweep;
 }

@@ -128,11 +128,11 @@ def main(bench_dir, docs_dir):
         p = res.get("particles")
         lines += ["## With a mesh inside the cloud: the same 8000 particles and an aircraft, at 1280×720", "",
                   "content/scenes/cumulus_aircraft.gltf (cumulus.gltf with an airliner-sized aircraft flying through it), one run. "
-                  "`blocks` shades every block smoothly (the default); `block_shading=seam` shades them exactly near the texels "
-                  "where the aircraft lies among their particles, `exact` over the whole of every block in front of it or "
-                  "around it:", "", table(air), ""]
+                  "`blocks` (block_shading=seam, the default) shades blocks exactly near the texels where the aircraft lies "
+                  "among their particles and smoothly elsewhere; `block_shading=smooth` shades every block smoothly, `exact` "
+                  "exactly over the whole of every block in front of the aircraft or around it:", "", table(air), ""]
         if p:
-            for name in ("blocks", "blocks block_shading=seam", "blocks block_shading=exact"):
+            for name in ("blocks", "blocks block_shading=smooth", "blocks block_shading=exact"):
                 if name in res:
                     b = res[name]
                     lines.append("- `%s`: %.2f× the speed of `particles` (%.0f ms vs %.0f ms), rel-RMSE %s vs %s." % (

@@ -117,7 +117,9 @@ TEST_P(UnseenBlockScenesTest, BlocksStayWithinEightPercentOfTheReference) {
 // 0.33/1.19, 9800/01 1.45/2.23, 9900/01 2.05/3.30, 9900/09 1.63/2.23, 10000/08 0.78/1.13, 10100/02
 // 1.96/2.12, 10100/04 1.48/2.78, 10100/05 1.04/1.65, 10200/07 0.74/1.93, 10300/02 1.07/1.34,
 // 10300/07 1.86/2.78) and all 20 of fresh seeds 10400 and 10500, where smooth failed 10400/07 (6.38%
-// vs 2.85%; seam 2.25%). The default smooth shading is asserted too, except where it is known to fail.
+// vs 2.85%; seam 2.25%). On all 150 scenes of seeds 9100-10500 (2026-12-02), seam passes 150 (whole
+// image at most 3.15%) and smooth fails 16, so seam is the default; smooth, the faster setting, is
+// asserted too, except where it is known to fail.
 const std::map<std::string, std::string> kSmoothSeamKnownFailing = {
     {"block_scene_9700_08", "overlapping blocks' compositing order: 1.41% / billboards 1.19%"},
     {"block_scene_9800_01", "small dense particles shaded at uniform points: 3.10% / billboards 2.23%"},
@@ -131,8 +133,8 @@ TEST_P(UnseenSeamBandTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
     std::size_t seamPixels = 0;
     const std::vector<std::size_t> band = seamBand(scene, kWidth, kHeight, "wing", 2, &seamPixels);
     ASSERT_GT(seamPixels, 100u) << "the thin mesh must cut the cloud in this view";
-    const assets::RgbImage smoothImage = renderRealtime(scene, kWidth, kHeight, {"mode=blocks"});
-    const assets::RgbImage seamImage = renderRealtime(scene, kWidth, kHeight, {"mode=blocks", "block_shading=seam"});
+    const assets::RgbImage seamImage = renderRealtime(scene, kWidth, kHeight, {"mode=blocks"});  // block_shading=seam
+    const assets::RgbImage smoothImage = renderRealtime(scene, kWidth, kHeight, {"mode=blocks", "block_shading=smooth"});
     const assets::RgbImage billboardsImage = renderRealtime(scene, kWidth, kHeight, {"soft_particles=off"});
     const double smooth = relRmseOver(smoothImage, reference, band);
     const double seam = relRmseOver(seamImage, reference, band);
@@ -143,15 +145,15 @@ TEST_P(UnseenSeamBandTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
     dump(GetParam(), "seam", seamImage);
     dump(GetParam(), "billboards", billboardsImage);
     dump(GetParam(), "band", bandMask(band, kWidth, kHeight));
-    std::printf("%s: seam band (%zu px) blocks %.4f, block_shading=seam %.4f, particles soft_particles=off %.4f; seam whole image %.4f\n",
-                GetParam().c_str(), band.size(), smooth, seam, billboards, seamWhole);
+    std::printf("%s: seam band (%zu px) blocks %.4f, block_shading=smooth %.4f, particles soft_particles=off %.4f; blocks whole image %.4f\n",
+                GetParam().c_str(), band.size(), seam, smooth, billboards, seamWhole);
     RecordProperty("seam_band_blocks", std::to_string(smooth));
     RecordProperty("seam_band_seam_blocks", std::to_string(seam));
     RecordProperty("seam_band_billboards", std::to_string(billboards));
-    EXPECT_LT(seam, billboards) << "block_shading=seam";
-    EXPECT_LE(seamWhole, kMaxRelRmse) << "block_shading=seam";
-    if (kSmoothSeamKnownFailing.count(GetParam()) == 0) EXPECT_LT(smooth, billboards) << "block_shading=smooth (the default)";
-    else std::printf("  default not asserted (%s)\n", kSmoothSeamKnownFailing.at(GetParam()).c_str());
+    EXPECT_LT(seam, billboards) << "blocks (block_shading=seam, the default)";
+    EXPECT_LE(seamWhole, kMaxRelRmse) << "blocks (block_shading=seam, the default)";
+    if (kSmoothSeamKnownFailing.count(GetParam()) == 0) EXPECT_LT(smooth, billboards) << "block_shading=smooth";
+    else std::printf("  block_shading=smooth not asserted (%s)\n", kSmoothSeamKnownFailing.at(GetParam()).c_str());
 }
 
 std::string sceneName(const ::testing::TestParamInfo<std::string>& scene) { return scene.param; }

@@ -184,7 +184,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
     settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25 (default 1)");
     settings.declare("instancing", "blocks mode: build the cloud from one block prototype instanced at every block (default off)");
-    settings.declare("block_shading", "blocks mode, where a mesh is seen in the medium: smooth (default), seam (blocks shaded from their particles with the compositing order corrected near the mesh; slower) or exact (the same over those blocks' whole rectangles; slowest)");
+    settings.declare("block_shading", "blocks mode, where a mesh is seen in the medium: seam (default: blocks shaded from their particles with the compositing order corrected near the mesh), smooth (faster there, but the mesh can show a seam) or exact (as seam over those blocks' whole rectangles; slowest)");
     settings.declare("upsample_threshold", "offscreen media: relative depth difference treated as an edge (default 0.2)");
     app.resource<scene::SceneSpawners>().add("media", spawnMedia);
     app.addSystem({.name = kEmitSystem, .phase = nimbus::ecs::phases::kSimulate, .after = {scene::kAnimateSystem}}, emitSystem);
