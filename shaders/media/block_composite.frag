@@ -22,16 +22,21 @@ layout(binding = 5) uniform sampler2D uImpostorDepths;
 layout(binding = 6) uniform sampler2D uImpostorSums1;
 layout(binding = 7) uniform sampler2D uImpostorSums2;
 layout(binding = 8) uniform sampler2D uImpostorMoments;  // τ·mean, τ·(variance + mean²) of the depth along the ray
-layout(binding = 9) uniform sampler2D uSeamMask;         // media/block_seam.glsl; read where uSeamPart is not 0
+layout(binding = 9) uniform sampler2D uSeamMask;         // media/block_seam.glsl; read where uSeamPart is 2
 
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
 // Which texels this draw shades (block_composite_pass.cpp draws the blocks of a seam twice, once
-// per part): 0 all; 1 only those off the seam (seamWeight 0); 2 only those near it, where the
-// BLOCK_EXACT_SHADING build shades exactly, mixed with the smooth shading as seamWeight says.
+// per part, each behind a stencil test): 0 all; 1 only those off the seam (seamWeight 0); 2 only
+// those near it, where the BLOCK_EXACT_SHADING build shades exactly, mixed with the smooth shading
+// as seamWeight says.
 layout(location = 3) uniform int uSeamPart;
 layout(location = 5) uniform int uSeamCell;  // media texels per seam mask texel, per axis
 
 flat in ivec2 vBlock;  // x: the block, y: its rank in the back-to-front order
+
+// The seam stencil is only read (block_composite_pass.cpp), so testing it before shading changes
+// nothing but the cost: a texel of the other part is never shaded.
+layout(early_fragment_tests) in;
 
 layout(location = 0) out vec4 outColor;
 
@@ -39,8 +44,7 @@ void main() {
     BlockTile tile = blockTiles[vBlock.x];
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
     vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
-    float seam = uSeamPart != 0 ? seamWeight(uSeamMask, gl_FragCoord.xy, uSeamCell) : 1.0;
-    if (uSeamPart == 1 ? seam > 0.0 : seam <= 0.0) discard;  // the other draw's texel
+    float seam = uSeamPart == 2 ? seamWeight(uSeamMask, gl_FragCoord.xy, uSeamCell) : (uSeamPart == 1 ? 0.0 : 1.0);
     ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, uImpostorMoments, 3, tile, tileTexel(tile, ndc));
     if (!(s.tau > 0.0)) discard;
     // An instance of the prototype sits farther or nearer than the prototype the tile was made for.

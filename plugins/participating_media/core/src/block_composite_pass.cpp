@@ -200,7 +200,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
         });
 
     struct Composite {
-        render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments, seamMask;
+        render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments, seamMask, seamStencil;
     };
     const int w = target.size.x, h = target.size.y;
     // Runs of consecutive ranks that want the same build, drawn in order.
@@ -223,11 +223,11 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
         if (run.build & kBlockExactCut) cutRuns.push_back(run.ranks);
         seamRuns = seamRuns || (run.build & kBlockExactShading);
     }
-    render::ResourceHandle seamMask;
+    BlockSeamMaskPass::Output seam;
     const int seamCell = seamMaskCell(target.size);
     if (seamOnly && seamRuns && !cutRuns.empty()) {
         if (!seamMask_) seamMask_ = std::make_unique<BlockSeamMaskPass>();
-        seamMask = seamMask_->add(graph, context, std::move(cutRuns), blocks, made.depths, target, seamCell);
+        seam = seamMask_->add(graph, context, std::move(cutRuns), blocks, made.depths, target, seamCell);
     }
     // Each draw: its ranks, program and seam part (block_composite.frag uSeamPart).
     struct Draw {
@@ -240,7 +240,7 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
         const auto smooth = static_cast<std::uint8_t>(run.build & ~kBlockExactShading);
         if (!seamOnly || !(run.build & kBlockExactShading)) {
             draws.push_back({run.ranks, &programs(run.build).forLights(context.input.lights), 0});
-        } else if (seamMask.valid()) {
+        } else if (seam.mask.valid()) {
             draws.push_back({run.ranks, &programs(smooth).forLights(context.input.lights), 1});
             draws.push_back({run.ranks, &programs(run.build).forLights(context.input.lights), 2});
         } else {  // no block a mesh comes near: no seam
@@ -258,13 +258,18 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
             d.sums1 = builder.read(made.sums1);
             d.sums2 = builder.read(made.sums2);
             d.moments = builder.read(made.moments);
-            if (seamMask.valid()) d.seamMask = builder.read(seamMask);
+            if (seam.mask.valid()) {
+                d.seamMask = builder.read(seam.mask);
+                d.seamStencil = builder.read(seam.stencil);
+            }
         },
         [this, draws, &context, &blocks, &particles, w, h, seamCell, scale = target.fullResScale](const render::PassResources& r,
                                                                                                  const Composite& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
             glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            // Read only: a seam run's draws test it (stencil 1: near the seam), write nothing to it.
+            if (d.seamStencil.valid()) glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, r.id(d.seamStencil), 0);
             glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
             glViewport(0, 0, w, h);
             const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -296,8 +301,17 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
                 glUseProgram(program);
                 glProgramUniform1i(program, kFirstRankLocation, draw.ranks.first);
                 glProgramUniform1i(program, kSeamPartLocation, draw.seamPart);
+                if (draw.seamPart != 0) {
+                    glEnable(GL_STENCIL_TEST);
+                    glStencilFunc(GL_EQUAL, draw.seamPart == 2 ? 1 : 0, 0xFF);
+                    glStencilMask(0x00);
+                } else {
+                    glDisable(GL_STENCIL_TEST);
+                }
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, draw.ranks.count);
             }
+            glDisable(GL_STENCIL_TEST);
+            glStencilMask(0xFF);
             glBindVertexArray(0);
             glDisable(GL_BLEND);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

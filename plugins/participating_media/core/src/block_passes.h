@@ -178,11 +178,16 @@ int seamMaskCell(glm::ivec2 size);
 class BlockSeamMaskPass {
 public:
     BlockSeamMaskPass();
-    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, std::vector<BlockRankRun> runs,
-                               const BlockGpuBuffers& blocks, render::ResourceHandle impostorDepths, const MediaTarget& target, int cell);
+    struct Output {
+        render::ResourceHandle mask;     // R8, one texel per cell
+        render::ResourceHandle stencil;  // the media target's size: stencil 1 where seamWeight > 0
+    };
+    Output add(render::FrameGraph& graph, render::FrameContext& context, std::vector<BlockRankRun> runs, const BlockGpuBuffers& blocks,
+               render::ResourceHandle impostorDepths, const MediaTarget& target, int cell);
 
 private:
     gpu::Program program_;
+    gpu::Program stencilProgram_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 
