@@ -215,8 +215,9 @@ render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render
         ++runs.back().ranks.count;
     }
     // With seamOnly, the mask says where the blocks a mesh comes near are cut, and an exactly shaded
-    // run is drawn twice: smoothly off the seam, then exactly near it. At each texel one of the two
-    // draws writes every block of the run, so the back-to-front order holds.
+    // run is drawn twice: smoothly off the seam, then exactly near it (the mask pass's stencil says
+    // which texels each draw shades). At each texel one of the two draws writes every block of the
+    // run, so the back-to-front order holds.
     std::vector<BlockRankRun> cutRuns;
     bool seamRuns = false;
     for (const Run& run : runs) {
