@@ -26,7 +26,8 @@ std::filesystem::path sceneDir() {
 }
 
 // With $NIMBUS_BLOCK_SCENES_DUMP set, the seam test writes there what it compared
-// (<scene>_{reference,blocks,billboards,band}.exr; the band is 1 inside it), to see where an error lies.
+// (<scene>_{reference,blocks,smooth,billboards,band}.exr; blocks is the default, seam; the band is 1
+// inside it), to see where an error lies.
 void dump(const std::string& scene, const char* what, const assets::RgbImage& image) {
     const char* folder = std::getenv("NIMBUS_BLOCK_SCENES_DUMP");
     if (folder == nullptr || *folder == '\0') return;
@@ -141,14 +142,14 @@ TEST_P(UnseenSeamBandTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
     const double billboards = relRmseOver(billboardsImage, reference, band);
     const double seamWhole = relRmse(seamImage, reference);
     dump(GetParam(), "reference", reference);
-    dump(GetParam(), "blocks", smoothImage);
-    dump(GetParam(), "seam", seamImage);
+    dump(GetParam(), "blocks", seamImage);
+    dump(GetParam(), "smooth", smoothImage);
     dump(GetParam(), "billboards", billboardsImage);
     dump(GetParam(), "band", bandMask(band, kWidth, kHeight));
     std::printf("%s: seam band (%zu px) blocks %.4f, block_shading=smooth %.4f, particles soft_particles=off %.4f; blocks whole image %.4f\n",
                 GetParam().c_str(), band.size(), seam, smooth, billboards, seamWhole);
-    RecordProperty("seam_band_blocks", std::to_string(smooth));
-    RecordProperty("seam_band_seam_blocks", std::to_string(seam));
+    RecordProperty("seam_band_blocks", std::to_string(seam));
+    RecordProperty("seam_band_smooth_blocks", std::to_string(smooth));
     RecordProperty("seam_band_billboards", std::to_string(billboards));
     EXPECT_LT(seam, billboards) << "blocks (block_shading=seam, the default)";
     EXPECT_LE(seamWhole, kMaxRelRmse) << "blocks (block_shading=seam, the default)";
