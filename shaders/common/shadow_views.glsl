@@ -1,2 +1,2 @@
 // The mesh shadow-map views (render/frame_data.h: SSBO binding 1). Needs light_views.glsl.
-layout(std430, binding = 1) readonly buffer ShadowViews { GpuLightView shadowViews[]; };
+layout(std140, binding = 2) uniform ShadowViews { GpuLightView shadowViews[MAX_LIGHT_VIEWS]; };

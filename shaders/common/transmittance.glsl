@@ -2,7 +2,7 @@
 // Slice k (0-based) of a view holds the optical depth accumulated from the light up to view depth
 // near + (k+1)(far − near)/K; depth `near` has zero. Between slices τ is interpolated linearly,
 // so τ is exact at every slice plane. Needs lights.glsl and light_views.glsl.
-layout(std430, binding = 2) readonly buffer TransmittanceViews { GpuLightView transmittanceViews[]; };
+layout(std140, binding = 3) uniform TransmittanceViews { GpuLightView transmittanceViews[MAX_LIGHT_VIEWS]; };
 layout(binding = 2) uniform sampler2DArray transmittanceSlices;
 
 float sliceValue(vec2 uv, float firstLayer, int k) {
@@ -19,12 +19,12 @@ float viewOpticalDepth(GpuLightView v, vec3 p) {
     int K = int(v.params.w);
     float s = (depth - v.params.y) / (v.params.z - v.params.y) * float(K);
     if (s <= 0.0) return 0.0;
-    if (s >= float(K)) return sliceValue(uv, v.params2.x, K - 1);
-    int k = int(floor(s));
-    float f = s - float(k);
-    float lo = k == 0 ? 0.0 : sliceValue(uv, v.params2.x, k - 1);
+    // Two fetches whatever s is (llvmpipe runs every branch): the enclosing slices, or the last one
+    // past the medium.
+    int k = min(int(floor(s)), K - 1);
+    float lo = k == 0 ? 0.0 : sliceValue(uv, v.params2.x, max(k - 1, 0));
     float hi = sliceValue(uv, v.params2.x, k);
-    return mix(lo, hi, f);
+    return s >= float(K) ? hi : mix(lo, hi, s - float(k));
 }
 
 float mediumOpticalDepth(int lightIndex, vec3 p) {

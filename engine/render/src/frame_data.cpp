@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "nimbus/base/error.h"
 
 namespace nimbus::render {
 
@@ -16,15 +19,18 @@ GpuLightView packLightView(const LightView& v, int firstLayer, float sliceCount,
     return g;
 }
 
-FrameData::FrameData() { frameBuffer_ = gpu::createBuffer(sizeof(GpuFrame), nullptr, GL_DYNAMIC_STORAGE_BIT); }
+// Uniform blocks are declared at their largest, so the buffers are too.
+FrameData::FrameData()
+    : frameBuffer_(gpu::createBuffer(sizeof(GpuFrame), nullptr, GL_DYNAMIC_STORAGE_BIT)),
+      lights_(gpu::createBuffer(kMaxLights * sizeof(GpuLight), nullptr, GL_DYNAMIC_STORAGE_BIT)),
+      shadowViews_(gpu::createBuffer(kMaxLightViews * sizeof(GpuLightView), nullptr, GL_DYNAMIC_STORAGE_BIT)),
+      transmittanceViews_(gpu::createBuffer(kMaxLightViews * sizeof(GpuLightView), nullptr, GL_DYNAMIC_STORAGE_BIT)) {}
 
 template <typename T>
-void FrameData::upload(gpu::Buffer& buffer, std::size_t& capacity, const std::vector<T>& items) {
-    const std::size_t bytes = std::max<std::size_t>(items.size(), 1) * sizeof(T);
-    if (!buffer || capacity < bytes) {
-        buffer = gpu::createBuffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
-        capacity = bytes;
-    }
+void FrameData::upload(gpu::Buffer& buffer, std::size_t capacity, const std::vector<T>& items, const char* what) {
+    if (items.size() > capacity)
+        throw InputError(std::to_string(items.size()) + " " + what + " in one frame; the real-time renderer draws at most " +
+                         std::to_string(capacity));
     if (!items.empty()) glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(items.size() * sizeof(T)), items.data());
 }
 
@@ -70,16 +76,16 @@ void FrameData::update(const View& view, const assets::Environment& environment,
             g.media = glm::vec4(static_cast<float>(transmittance->perLight[i].x), static_cast<float>(transmittance->perLight[i].y), 0, 0);
         gpuLights.push_back(g);
     }
-    upload(lights_, lightsCapacity_, gpuLights);
-    upload(shadowViews_, shadowCapacity_, gpuShadowViews);
-    upload(transmittanceViews_, transmittanceCapacity_, transmittance ? transmittance->views : std::vector<GpuLightView>{});
+    upload(lights_, kMaxLights, gpuLights, "lights");
+    upload(shadowViews_, kMaxLightViews, gpuShadowViews, "shadow map views");
+    upload(transmittanceViews_, kMaxLightViews, transmittance ? transmittance->views : std::vector<GpuLightView>{}, "light slice views");
 }
 
 void FrameData::bind() const {
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameUniformBinding, frameBuffer_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightsBinding, lights_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewsBinding, shadowViews_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTransmittanceViewsBinding, transmittanceViews_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLightsBinding, lights_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kShadowViewsBinding, shadowViews_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kTransmittanceViewsBinding, transmittanceViews_.id());
 }
 
 }  // namespace nimbus::render

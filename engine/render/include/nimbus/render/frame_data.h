@@ -3,9 +3,9 @@
 // Layouts match shaders/common/frame.glsl, lights.glsl, shadows.glsl and transmittance.glsl.
 //
 //   UBO  binding 0  Frame                  camera, viewport, depth linearisation, environment
-//   SSBO binding 0  Lights[]               one per light
-//   SSBO binding 1  ShadowViews[]          mesh shadow map views (layers of the shadow array)
-//   SSBO binding 2  TransmittanceViews[]   medium optical-depth slice views (filled by a plugin)
+//   UBO  binding 1  Lights[64]             one per light
+//   UBO  binding 2  ShadowViews[384]       mesh shadow map views (layers of the shadow array)
+//   UBO  binding 3  TransmittanceViews[384] medium optical-depth slice views (filled by a plugin)
 //   texture unit 1  shadow map array (sampler2DArrayShadow)
 //   texture unit 2  transmittance slices (sampler2DArray, RGBA32F, 4 slices per layer)
 #include <cstdint>
@@ -22,9 +22,11 @@
 namespace nimbus::render {
 
 inline constexpr GLuint kFrameUniformBinding = 0;
-inline constexpr GLuint kLightsBinding = 0;
-inline constexpr GLuint kShadowViewsBinding = 1;
-inline constexpr GLuint kTransmittanceViewsBinding = 2;
+inline constexpr GLuint kLightsBinding = 1;               // uniform blocks, like the frame's
+inline constexpr GLuint kShadowViewsBinding = 2;
+inline constexpr GLuint kTransmittanceViewsBinding = 3;
+inline constexpr std::size_t kMaxLights = 64;            // shaders/common/lights.glsl MAX_LIGHTS
+inline constexpr std::size_t kMaxLightViews = 384;       // per kind; shaders/common/light_views.glsl MAX_LIGHT_VIEWS
 inline constexpr GLuint kShadowMapUnit = 1;
 inline constexpr GLuint kTransmittanceUnit = 2;
 inline constexpr GLuint kSceneDepthUnit = 3;
@@ -79,13 +81,13 @@ public:
     const GpuFrame& frame() const { return frame_; }
 
 private:
+    // Throws InputError naming `what` when there are more items than the block holds.
     template <typename T>
-    void upload(gpu::Buffer& buffer, std::size_t& capacity, const std::vector<T>& items);
+    void upload(gpu::Buffer& buffer, std::size_t capacity, const std::vector<T>& items, const char* what);
 
     GpuFrame frame_{};
     gpu::Buffer frameBuffer_;
     gpu::Buffer lights_, shadowViews_, transmittanceViews_;
-    std::size_t lightsCapacity_ = 0, shadowCapacity_ = 0, transmittanceCapacity_ = 0;
 };
 
 }  // namespace nimbus::render
