@@ -20,7 +20,7 @@ namespace {
 const char* const kSweptKeys[] = {"mode", "slices", "blocks", "impostor_scale", "instancing", "media_scale", "soft_particles", "layer_light", "block_shading"};
 
 bool isMediaPass(const std::string& name) {
-    return name == "light_slices" || name.rfind("media_", 0) == 0 || name.rfind("block_", 0) == 0;
+    return name.rfind("light_slice", 0) == 0 || name.rfind("media_", 0) == 0 || name.rfind("block_", 0) == 0;
 }
 
 void renderFrame(ecs::App& app) {

@@ -29,12 +29,14 @@ struct RenderOptions {
     std::vector<std::string> out;
     std::string size = "1280x720";
     std::string mode;
+    std::string quality;
     double time = 0.0;
     std::string camera;
     std::vector<std::string> settings;
     std::string stats;
     int frames = 20;
     float exposure = 1.0f;
+    bool floor = false;
 };
 
 void renderFrame(ecs::App& app) {
@@ -48,12 +50,14 @@ int run(const RenderOptions& o) {
     parseSize(o.size, width, height);
     if (o.frames < 20) throwInputError("--frames", std::to_string(o.frames), "", "at least 20 frames are timed");
 
-    std::vector<std::string> settings = o.settings;
-    if (!o.mode.empty()) settings.push_back("mode=" + o.mode);
+    SessionOptions options{o.scene, o.time, o.settings};
+    if (!o.mode.empty()) options.options.emplace_back("mode=" + o.mode, "--mode");
+    if (!o.quality.empty()) options.options.emplace_back("quality=" + o.quality, "--quality");
     std::unique_ptr<gpu::Context> context;  // declared first: it must outlive the GL objects the session makes
-    auto session = std::make_unique<Session>(SessionOptions{o.scene, o.time, settings});  // bad input is refused before any GL work
+    auto session = std::make_unique<Session>(options);  // bad input is refused before any GL work
     context = gpu::Context::create();
     ecs::App& app = session->app();
+    useDefaultQuality(app, kRenderDefaultQuality);
     auto& request = app.resource<render::RenderRequest>();
     request.enabled = true;
     request.settings.width = width;
@@ -87,6 +91,11 @@ int run(const RenderOptions& o) {
 
     auto& state = app.resource<render::RendererState>();
     const assets::RgbImage image = state.renderer->readOutput();
+    if (o.floor) {  // right after the timed frames, in the same process: the scene's fixed yardstick
+        const auto* media = app.world().tryResource<media::ecs::MediaRendererState>();
+        const render::View view = render::makeView(state.lastInput.camera, width, height);
+        stats["splat_floor_ms"] = media && media->renderer ? media->renderer->measureSplatFloor(view, o.frames) : 0.0;
+    }
     const gpu::GlErrorReport errors = context->takeGlErrors();
     for (const auto& file : o.out) assets::writeImage(file, image, {o.exposure});
 
@@ -103,6 +112,7 @@ int run(const RenderOptions& o) {
         if (const auto* media = app.world().tryResource<media::ecs::MediaRendererState>(); media && media->renderer) {
             const auto& frame = app.world().resource<media::ecs::MediaFrame>();
             stats["media_mode"] = media::mediaModeName(frame.settings.mode);
+            if (const auto quality = app.resource<Settings>().text("quality")) stats["quality"] = *quality;
             stats["media_particles"] = media->renderer->stats().particles;
             stats["media_slices"] = media->renderer->stats().slices;
             stats["media_slice_views"] = media->renderer->stats().sliceViews;
@@ -139,12 +149,15 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--out", options->out, "output image: .exr (linear radiance) or .png (sRGB); repeatable");
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
     cmd->add_option("--mode", options->mode, "media mode: particles (default) or blocks");
+    cmd->add_option("--quality", options->quality, "fast, balanced (default) or exact");
     cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));
     cmd->add_option("--camera", options->camera, "camera (camera or node name); default: the scene's first");
     cmd->add_option("--set", options->settings, "KEY=VALUE setting (repeatable)");
     cmd->add_option("--stats", options->stats, "write frame timings and renderer info as JSON");
     cmd->add_option("--frames", options->frames, "timed frames for --stats (at least 20)")->capture_default_str();
     cmd->add_option("--exposure", options->exposure, "PNG exposure multiplier")->capture_default_str()->check(CLI::PositiveNumber);
+    cmd->add_flag("--floor", options->floor, "with --stats: also measure splat_floor_ms, every particle's billboard blended once")
+        ->needs(cmd->get_option("--stats"));
     return [options] { return run(*options); };
 }
 

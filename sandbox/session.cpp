@@ -19,6 +19,7 @@ Session::Session(const SessionOptions& options) {
     app_->addPlugin<render::RenderPlugin>();
     app_->addPlugin<media::ecs::MediaPlugin>();
     for (const auto& assignment : options.settings) app_->resource<Settings>().assign(assignment);
+    for (const auto& [assignment, origin] : options.options) app_->resource<Settings>().assign(assignment, origin);
     scene::spawnScene(app_->world(), scene_);
     scene::simulateTo(*app_, options.time);
 }
@@ -51,6 +52,11 @@ std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::
     out->inputs.lights = assets::resolveLights(session.scene(), out->world);
     out->inputs.particles = &out->particles;
     return out;
+}
+
+void useDefaultQuality(ecs::App& app, const std::string& quality) {
+    auto& settings = app.resource<Settings>();
+    if (!settings.has("quality")) settings.set("quality", quality, "sandbox's default");
 }
 
 void parseSize(const std::string& text, int& width, int& height, const std::string& option) {

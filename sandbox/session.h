@@ -18,6 +18,7 @@ struct SessionOptions {
     std::filesystem::path scene;
     double time = 0.0;
     std::vector<std::string> settings;  // KEY=VALUE from --set
+    std::vector<std::pair<std::string, std::string>> options;  // (KEY=VALUE, origin) from options such as --mode
 };
 
 class Session {
@@ -48,6 +49,12 @@ struct ReferenceScene {
     media::reference::ReferenceInputs inputs;
 };
 std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height);
+
+// What `sandbox render`, the demo and the editor render at unless told otherwise: the quality tier
+// a game would pick. Libraries and tests default to `exact`.
+inline constexpr char kRenderDefaultQuality[] = "balanced";
+// Sets `quality` to `quality` unless the command line or the scene chose one.
+void useDefaultQuality(ecs::App& app, const std::string& quality);
 
 // Parses "WxH" (1..16384 each); throws InputError naming the option otherwise.
 void parseSize(const std::string& text, int& width, int& height, const std::string& option = "--size");

@@ -1,19 +1,35 @@
 #version 450 core
-// Compose (DESIGN.md §3 step 4): the media target holds in-scattered radiance (premultiplied) in
-// rgb and the view transmittance in a, so final = media.rgb + media.a · opaque. Output is linear.
+// Compose (DESIGN.md §3 step 4): a translucent layer (the media target) holds in-scattered radiance
+// (premultiplied) in rgb and the view transmittance in a, so final = layer.rgb + layer.a · opaque.
+// COMPOSE_LAYER: there is one; COMPOSE_UPSAMPLE: at a reduced resolution, upsampled with depth
+// awareness on the way (common/upsample.glsl). Output is linear.
 layout(binding = 0) uniform sampler2D uOpaque;
-layout(binding = 1) uniform sampler2D uMedia;
-layout(location = 0) uniform int uHasMedia;
 
 layout(location = 0) out vec4 outRadiance;
+
+#ifdef COMPOSE_LAYER
+layout(binding = 1) uniform sampler2D uLayer;
+#endif
+#ifdef COMPOSE_UPSAMPLE
+#include "common/frame.glsl"
+#include "common/upsample.glsl"
+layout(binding = 2) uniform sampler2D uDepthUsed;
+layout(binding = 3) uniform sampler2D uSceneDepth;
+layout(location = 1) uniform vec2 uScale;       // reduced / full resolution per axis
+layout(location = 2) uniform float uThreshold;  // relative depth difference that marks an edge
+#endif
 
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec3 opaque = texelFetch(uOpaque, p, 0).rgb;
-    if (uHasMedia == 0) {
-        outRadiance = vec4(opaque, 1.0);
-        return;
-    }
-    vec4 media = texelFetch(uMedia, p, 0);
-    outRadiance = vec4(media.rgb + media.a * opaque, 1.0);
+#if defined(COMPOSE_UPSAMPLE)
+    float depth = linearViewDepth(texelFetch(uSceneDepth, p, 0).r);
+    vec4 layer = upsampleLayer(uLayer, uDepthUsed, gl_FragCoord.xy, uScale, depth, uThreshold);
+    outRadiance = vec4(layer.rgb + layer.a * opaque, 1.0);
+#elif defined(COMPOSE_LAYER)
+    vec4 layer = texelFetch(uLayer, p, 0);
+    outRadiance = vec4(layer.rgb + layer.a * opaque, 1.0);
+#else
+    outRadiance = vec4(opaque, 1.0);
+#endif
 }

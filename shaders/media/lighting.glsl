@@ -187,6 +187,9 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
     float vBar = shadingDepthFraction(tau) * tau;
     vec3 scattered = frame.ambient.rgb;
     for (int i = 0; i < frame.counts.x; ++i) {
+#ifdef SEGMENT_SKIPS_LIGHT  // particle_lighting.comp: lights its fragments evaluate
+        if (SEGMENT_SKIPS_LIGHT(i)) continue;
+#endif
 #ifdef MEDIA_LOCAL_LIGHTS  // particle_pass.cpp builds this only for frames with point or spot lights
         if (lights[i].direction.w > 0.5) {
             vec2 lit = spotConeInterval(i, origin, dir, c, lo, hi);

@@ -1,25 +1,37 @@
-// Compose: medium over opaque into the persistent linear output (shaders/compose.frag).
+// Compose: the translucent layer (the media) over opaque into the persistent linear output,
+// upsampling a reduced-resolution layer on the way (shaders/compose.frag).
 #include "passes.h"
 
 #include "nimbus/gpu/shader_program.h"
+#include "nimbus/render/frame_data.h"
 
 namespace nimbus::render {
 
-ComposePass::ComposePass() { program_ = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "compose.frag"}); }
+ComposePass::ComposePass()
+    : opaqueOnly_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "compose.frag"})),
+      layer_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "compose.frag", .defines = {"COMPOSE_LAYER"}})),
+      upsample_(gpu::compileProgram(
+          {.vertex = "fullscreen.vert", .fragment = "compose.frag", .defines = {"COMPOSE_LAYER", "COMPOSE_UPSAMPLE"}})),
+      clampedNearest_(gpu::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE)) {}
 
 void ComposePass::add(FrameGraph& graph, FrameContext& context, const gpu::Texture& output) {
     struct Data {
-        ResourceHandle color, media, output;
+        ResourceHandle color, layer, depthUsed, sceneDepth, output;
     };
+    const TranslucentLayer overlay = context.overlay;
     graph.addPass<Data>(
         "compose",
         [&](PassBuilder& builder, Data& d) {
             d.color = builder.read(context.sceneColor);
-            if (context.mediaColor.valid()) d.media = builder.read(context.mediaColor);
+            if (overlay.color.valid()) d.layer = builder.read(overlay.color);
+            if (overlay.color.valid() && overlay.depthUsed.valid()) {
+                d.depthUsed = builder.read(overlay.depthUsed);
+                d.sceneDepth = builder.read(context.sceneDepth);
+            }
             d.output = builder.write(graph.importTexture("output", output));
             builder.sideEffect();
         },
-        [this](const PassResources& resources, const Data& d) {
+        [this, &context, threshold = overlay.edgeThreshold](const PassResources& resources, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             const auto& desc = resources.desc(d.output);
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.output), 0);
@@ -28,11 +40,23 @@ void ComposePass::add(FrameGraph& graph, FrameContext& context, const gpu::Textu
             glDisable(GL_DEPTH_TEST);
             glDisable(GL_BLEND);
             glDisable(GL_CULL_FACE);
-            glUseProgram(program_.id());
+            const bool upsample = d.depthUsed.valid();
+            const GLuint program = upsample ? upsample_.id() : d.layer.valid() ? layer_.id() : opaqueOnly_.id();
+            glUseProgram(program);
             glBindTextureUnit(0, resources.id(d.color));
-            glProgramUniform1i(program_.id(), 0, d.media.valid() ? 1 : 0);
-            if (d.media.valid()) glBindTextureUnit(1, resources.id(d.media));
+            if (d.layer.valid()) glBindTextureUnit(1, resources.id(d.layer));
+            if (upsample) {
+                const auto& low = resources.desc(d.layer);
+                context.frameData->bind();
+                glBindTextureUnit(2, resources.id(d.depthUsed));
+                glBindSampler(2, clampedNearest_.id());
+                glBindTextureUnit(3, resources.id(d.sceneDepth));
+                glProgramUniform2f(program, 1, static_cast<float>(low.width) / static_cast<float>(desc.width),
+                                   static_cast<float>(low.height) / static_cast<float>(desc.height));
+                glProgramUniform1f(program, 2, threshold);
+            }
             triangle_.draw();
+            glBindSampler(2, 0);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
 }

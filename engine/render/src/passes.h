@@ -35,7 +35,8 @@ public:
     void add(FrameGraph& graph, FrameContext& context, const gpu::Texture& output);
 
 private:
-    gpu::Program program_;
+    gpu::Program opaqueOnly_, layer_, upsample_;
+    gpu::Sampler clampedNearest_;  // the upsampling gathers depths at the layer's edges
     FullscreenTriangle triangle_;
 };
 

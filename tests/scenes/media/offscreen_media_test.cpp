@@ -1,4 +1,4 @@
-// Offscreen media (seed 002, media_upsample_pass.cpp + shaders/media/upsample.frag): `particles` at
+// Offscreen media (seed 002, media_depth_used_pass.cpp + shaders/common/upsample.glsl in compose): `particles` at
 // media_scale 0.5 and 0.25 on cloud.gltf, where a wing crosses the cloud, against the same frame at
 // full resolution and against the reference.
 //   - The upsampled frame stays close to the full-resolution one (rel-RMSE bound per scale).

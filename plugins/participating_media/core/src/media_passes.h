@@ -1,5 +1,6 @@
 #pragma once
 // The plugin's GPU passes (one .cpp + one shader pair each).
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -44,6 +45,40 @@ private:
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();  // core profile: one must be bound
 };
 
+// The light slices in deposit form (the fast tiers), two passes that replace LightSlicePass: each
+// particle is drawn once into each slab between two slice planes it reaches, as one R32F layer per
+// slab (slice_plan.h appendSlabPieces); the prefix pass sums the slabs into the RGBA32F slices
+// LightSlicePass writes. Per fragment one float instead of ceil(K/4) RGBA targets and K erf values.
+// Needs ARB_shader_viewport_layer_array (gl_Layer from the vertex shader).
+class LightSliceDepositPass {
+public:
+    LightSliceDepositPass();
+    static bool supported();
+    // `pieces`: every view's pieces, view v's from firstPiece[v] (firstPiece has views.size() + 1 entries).
+    render::ResourceHandle add(render::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
+                               const ParticleGpuBuffer& buffer, std::vector<std::uint32_t> pieces, std::vector<int> firstPiece);
+
+private:
+    gpu::Program program_;
+    gpu::Texture kernelTable_;
+    gpu::Buffer pieces_;
+    std::size_t capacity_ = 0;
+    std::vector<std::uint32_t> staging_;  // this frame's pieces, uploaded when the pass runs
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+// Sums each view's slabs into the optical depth up to each of its slice planes.
+class LightSlicePrefixPass {
+public:
+    LightSlicePrefixPass();
+    render::ResourceHandle add(render::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
+                               render::ResourceHandle slabs);
+
+private:
+    gpu::Program program_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
 // The media target of one frame: full resolution, or reduced (seed 002's offscreen particles) and
 // upsampled afterwards. A mode pass renders into `size`; texel i stands for full-resolution
 // position (i + 0.5) · fullResScale.
@@ -72,16 +107,55 @@ private:
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 
-// Seed 002: the depth each reduced texel used, then a depth-aware upsampling to full resolution.
-class MediaUpsamplePass {
+inline constexpr GLuint kParticleLightBinding = 10;
+inline constexpr int kMaxFragmentLamps = 2;  // shaders/media/particle_light_layout.glsl MAX_FRAGMENT_LAMPS
+
+// The point and spot lights whose 1/d² the fast splats evaluate per fragment (−1: none): near a
+// lamp it peaks across a particle far more sharply than a linear field follows.
+using FragmentLamps = std::array<GLint, kMaxFragmentLamps>;
+FragmentLamps fragmentLamps(const std::vector<assets::ResolvedLight>& lights);
+
+// Per-particle lighting (the fast tiers): each particle's source as a linear field over its
+// billboard, in draw order, evaluated at five rays (`exact`: as particles.frag shades a pixel).
+class ParticleLightingPass {
 public:
-    MediaUpsamplePass();
-    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, render::ResourceHandle low,
-                               const MediaTarget& target, float threshold);
+    ParticleLightingPass();
+    void add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer, std::size_t particles,
+             bool exact, const FragmentLamps& lamps);
+    void bind() const;  // the lighting buffer, for the splats
 
 private:
-    gpu::Program depthProgram_;
-    gpu::Program upsampleProgram_;
+    gpu::Program fast_;
+    std::unique_ptr<LocalLightPrograms> exact_;  // built when first asked for
+    gpu::Buffer light_;
+    std::size_t capacity_ = 0;
+};
+
+// Fast particles: the sorted billboards with per-vertex source and per-fragment opacity from the
+// pre-integrated kernel table. `eyeInside`: some particle contains the eye (its segment starts there).
+class ParticleSplatPass {
+public:
+    ParticleSplatPass();
+    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
+                               const ParticleLightingPass& lighting, bool eyeInside, const FragmentLamps& lamps,
+                               const MediaTarget& target);
+
+private:
+    const gpu::Program& program(bool eyeInside, bool lamps);
+    gpu::Program programs_[4];  // by eyeInside + 2·lamps, built when first asked for
+    gpu::Texture kernelTable_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+// Seed 002: the view depth each reduced texel of the media target used, which the compose pass's
+// depth-aware upsampling compares with each full-resolution pixel's.
+class MediaDepthUsedPass {
+public:
+    MediaDepthUsedPass();
+    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const MediaTarget& target);
+
+private:
+    gpu::Program program_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

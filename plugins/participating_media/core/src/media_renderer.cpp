@@ -8,6 +8,7 @@
 #include "nimbus/base/error.h"
 #include "nimbus/media/slice_plan.h"
 #include "particle_buffer.h"
+#include "splat_floor.h"
 
 namespace nimbus::media {
 
@@ -52,6 +53,16 @@ assets::Aabb particleBounds(const ParticleSet& particles) {
         bounds.extend(particles.position[i] + r);
     }
     return bounds;
+}
+
+bool eyeInsideMedium(const ParticleSet& particles, const render::View& view) {
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const glm::dvec3 d = particles.position[i] - view.origin;
+        // Orthographic rays start on the camera's plane: a particle crossing it holds their start.
+        const double distance = view.orthographic ? std::abs(glm::dot(d, view.forward)) : glm::length(d);
+        if (distance < particles.radius[i]) return true;
+    }
+    return false;
 }
 
 MediaRenderer::MediaRenderer() = default;
@@ -165,8 +176,27 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
                                                            *buffer_, *impostorRenderer_);
         return;
     }
+    if (settings_.sliceDeposit && LightSliceDepositPass::supported()) {
+        std::vector<std::uint32_t> pieces;
+        std::vector<int> firstPiece{0};
+        for (const SliceView& v : views) {
+            appendSlabPieces(*particles_, v.view, context.view.origin, v.slices, pieces);
+            firstPiece.push_back(static_cast<int>(pieces.size()));
+        }
+        if (!depositPass_) depositPass_ = std::make_unique<LightSliceDepositPass>();
+        if (!prefixPass_) prefixPass_ = std::make_unique<LightSlicePrefixPass>();
+        const render::ResourceHandle slabs = depositPass_->add(graph, views, resolution, *buffer_, std::move(pieces), std::move(firstPiece));
+        context.transmittanceSlices = prefixPass_->add(graph, views, resolution, slabs);
+        return;
+    }
     if (!slicePass_) slicePass_ = std::make_unique<LightSlicePass>();
     context.transmittanceSlices = slicePass_->add(graph, views, resolution, *buffer_);
+}
+
+double MediaRenderer::measureSplatFloor(const render::View& view, int repeats) {
+    if (!buffer_) return 0.0;
+    if (!splatFloor_) splatFloor_ = std::make_unique<SplatFloor>();
+    return splatFloor_->measure(*buffer_, view, repeats);
 }
 
 BlockViewPlan MediaRenderer::planFor(const ImpostorView& view, const glm::dvec3& origin, const std::vector<std::uint8_t>& notDrawn) const {
@@ -222,16 +252,22 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
         }
         media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, builds,
                                          settings_.blockShading == BlockShading::Seam, *blockBuffers_, *buffer_, *impostorRenderer_, target);
+    } else if (settings_.lighting != ParticleLighting::Fragment) {
+        if (!lightingPass_) lightingPass_ = std::make_unique<ParticleLightingPass>();
+        if (!splatPass_) splatPass_ = std::make_unique<ParticleSplatPass>();
+        const FragmentLamps lamps = fragmentLamps(context.input.lights);
+        lightingPass_->add(graph, context, *buffer_, particles_->size(), settings_.lighting == ParticleLighting::ParticleExact, lamps);
+        media = splatPass_->add(graph, context, *buffer_, *lightingPass_, eyeInsideMedium(*particles_, v), lamps, target);
     } else {
         if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
         media = particlePass_->add(graph, context, *buffer_, {settings_.softParticles, settings_.layerLight}, target);
     }
+    context.overlay = {media, {}, 0.2f};
     if (reduced) {
-        if (!upsamplePass_) upsamplePass_ = std::make_unique<MediaUpsamplePass>();
-        const float threshold = settings_.upsampleThreshold > 0.0f ? settings_.upsampleThreshold : 0.2f;
-        media = upsamplePass_->add(graph, context, media, target, threshold);
+        if (!depthUsedPass_) depthUsedPass_ = std::make_unique<MediaDepthUsedPass>();
+        context.overlay.depthUsed = depthUsedPass_->add(graph, context, target);
+        if (settings_.upsampleThreshold > 0.0f) context.overlay.edgeThreshold = settings_.upsampleThreshold;
     }
-    context.mediaColor = media;
 }
 
 }  // namespace nimbus::media

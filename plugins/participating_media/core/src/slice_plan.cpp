@@ -55,4 +55,22 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
     return e;
 }
 
+SlabRange particleSlabs(double depth, double radius, bool perspective, double depthNear, double depthFar, int slices) {
+    if (perspective && depth + radius <= 0.0) return {};  // wholly behind the light
+    const double spacing = (depthFar - depthNear) / slices;
+    auto slab = [&](double d) { return std::clamp(static_cast<int>(std::floor((d - depthNear) / spacing)), 0, slices - 1); };
+    return {slab(depth - radius), slab(depth + radius)};
+}
+
+void appendSlabPieces(const ParticleSet& particles, const render::LightView& view, const glm::dvec3& origin, int slices,
+                      std::vector<std::uint32_t>& pieces) {
+    const glm::dmat4 viewMatrix(view.view);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const double depth = -(viewMatrix * glm::dvec4(particles.position[i] - origin, 1.0)).z;
+        const SlabRange range = particleSlabs(depth, particles.radius[i], view.perspective, view.depthNear, view.depthFar, slices);
+        for (int k = range.first; k <= range.last; ++k)
+            pieces.push_back(static_cast<std::uint32_t>(i) << kSlabBits | static_cast<std::uint32_t>(k));
+    }
+}
+
 }  // namespace nimbus::media

@@ -21,6 +21,7 @@ using nimbus::ecs::Entity;
 using nimbus::ecs::World;
 
 MediaRenderSettings readSettings(const Settings* settings);
+bool isQuality(const std::string& text);
 void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaScene& media);
 
 std::string settingText(const nlohmann::json& value) {
@@ -87,12 +88,25 @@ void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaSce
     }
 }
 
+bool isQuality(const std::string& text) {
+    return std::any_of(std::begin(kQualityPresets), std::end(kQualityPresets), [&](const QualityPreset& p) { return text == p.name; });
+}
+
 MediaRenderSettings readSettings(const Settings* settings) {
     MediaRenderSettings s;
     if (settings == nullptr) return s;
-    if (auto v = settings->text("mode")) s.mode = parseMediaMode(*v, "--mode");
+    if (auto v = settings->text("quality"); v && !isQuality(*v))
+        throwInputError(settings->origin("quality"), *v, "", "unknown quality (known: fast, balanced, exact)");
+    if (auto v = settings->text("mode")) s.mode = parseMediaMode(*v, settings->origin("mode"));
     if (auto v = settings->integer("slices", kMinSlices, kMaxSlices)) s.slices = static_cast<int>(*v);
     if (auto v = settings->integer("slice_resolution", 16, 4096)) s.sliceResolution = static_cast<int>(*v);
+    if (auto v = settings->text("lighting")) {
+        if (*v == "fragment") s.lighting = ParticleLighting::Fragment;
+        else if (*v == "particle") s.lighting = ParticleLighting::Particle;
+        else if (*v == "particle_exact") s.lighting = ParticleLighting::ParticleExact;
+        else throwInputError(settings->origin("lighting"), *v, "", "unknown lighting (known: fragment, particle, particle_exact)");
+    }
+    if (auto v = settings->boolean("slice_deposit")) s.sliceDeposit = *v;
     if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
     if (auto v = settings->boolean("layer_light")) s.layerLight = *v;
     if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
@@ -175,9 +189,14 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     app.insertResource<MediaRendererState>();
     if (!app.hasResource<Settings>()) app.insertResource<Settings>();
     auto& settings = app.resource<Settings>();
+    settings.declare("quality", "fast, balanced or exact (the library's default; sandbox render's is balanced): the settings each picks are in docs/PERFORMANCE.md");
+    for (const QualityPreset& preset : kQualityPresets)
+        settings.definePreset("quality", preset.name, {preset.settings.begin(), preset.settings.end()});
     settings.declare("mode", "media mode: particles (default) or blocks");
     settings.declare("slices", "light slices per light view, 4..32 (default: chosen from the medium)");
     settings.declare("slice_resolution", "texels per side of a light slice (default 256)");
+    settings.declare("lighting", "particles mode: where light is evaluated: fragment (default, exact), particle (per particle, linear across it) or particle_exact");
+    settings.declare("slice_deposit", "light slices drawn as one float per particle and slab, then summed: on or off (default)");
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
     settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)), more in optically thick media or around a lamp inside them)");

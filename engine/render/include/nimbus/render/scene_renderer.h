@@ -38,6 +38,16 @@ struct FrameInput {
     assets::Environment environment;
 };
 
+// A translucent layer an extension puts over the opaque scene: premultiplied radiance in rgb and
+// transmittance in a, so compose writes layer.rgb + layer.a · opaque. At a reduced resolution it
+// comes with the view depth each texel was computed at, and compose upsamples it with depth
+// awareness (shaders/common/upsample.glsl).
+struct TranslucentLayer {
+    ResourceHandle color;      // invalid: no layer this frame
+    ResourceHandle depthUsed;  // R32F view depth per texel; invalid: full resolution
+    float edgeThreshold = 0.2f;  // relative depth difference the upsampling treats as an edge
+};
+
 // What the passes of one frame share while the graph is set up.
 struct FrameContext {
     const FrameInput& input;
@@ -51,7 +61,7 @@ struct FrameContext {
     ResourceHandle sceneColor;                        // opaque radiance (RGBA32F)
     ResourceHandle sceneDepth;                        // reversed-Z depth (D32F)
     ResourceHandle transmittanceSlices;               // set by the extension that fills `transmittance`
-    ResourceHandle mediaColor;                        // set by a media extension: rgb in-scatter, a transmittance
+    TranslucentLayer overlay;                         // set by an extension (the media): composed over the opaque scene
     const FrameData* frameData = nullptr;
 };
 

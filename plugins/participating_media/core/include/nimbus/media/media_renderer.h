@@ -27,6 +27,14 @@ enum class BlockShading : std::uint8_t {
     Exact,   // exactly over those blocks' whole rectangles
 };
 
+// Where `particles` mode evaluates each particle's light (the source J of DESIGN.md §2).
+enum class ParticleLighting : std::uint8_t {
+    Fragment,       // per fragment, with every correction: the exact tier
+    Particle,       // per particle at five rays through its billboard, J linear across it; light
+                    // at each ray's shading point (phase, smooth mesh shadow, slices' transmittance)
+    ParticleExact,  // as Particle, each ray shaded as Fragment shades a pixel
+};
+
 // Parses "particles" or "blocks"; throws InputError naming the option for anything else.
 MediaMode parseMediaMode(const std::string& text, const std::string& origin = "--mode");
 const char* mediaModeName(MediaMode mode);
@@ -36,6 +44,9 @@ struct MediaRenderSettings {
     MediaMode mode = MediaMode::Particles;
     int slices = 0;            // per light view; 0: chosen from the medium (see slice_plan.h), else 4..32
     int sliceResolution = 0;   // texels per side of a slice; 0: 256
+    bool sliceDeposit = false; // slices as one float per particle and slab, then a running sum (the fast
+                               // tiers; bit for bit apart from the exact pass, within float rounding)
+    ParticleLighting lighting = ParticleLighting::Fragment;  // particles mode
     bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
     bool layerLight = true;    // particles mode: integrate the light's transmittance over each particle's layer
                                // (off: take it at one point: up to 26% less frame time in docs/PERFORMANCE.md,
@@ -45,7 +56,7 @@ struct MediaRenderSettings {
     bool instancing = false;   // blocks mode: one block prototype instanced at every block (seed 000 §2's b + N/b)
     BlockShading blockShading = BlockShading::Seam;  // blocks mode: where a mesh is seen in the medium
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
-    float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2 (see upsample.frag)
+    float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2 (common/upsample.glsl)
 };
 
 struct MediaFrameStats {
@@ -66,7 +77,12 @@ class BlockGpuBuffers;
 class BlockImpostorRenderer;
 class BlockCompositePass;
 class BlockSlicePass;
-class MediaUpsamplePass;
+class MediaDepthUsedPass;
+class ParticleLightingPass;
+class LightSliceDepositPass;
+class SplatFloor;
+class LightSlicePrefixPass;
+class ParticleSplatPass;
 struct BlockFrame;
 struct BlockViewPlan;
 struct ImpostorView;
@@ -87,6 +103,10 @@ public:
 
     const MediaFrameStats& stats() const { return stats_; }
 
+    // The splat floor of the last rendered frame's particles seen through `view` (splat_floor.h):
+    // median ms of `repeats` GPU-synchronised draws. 0 before anything was drawn.
+    double measureSplatFloor(const render::View& view, int repeats = 20);
+
 private:
     float impostorScale() const;
     // `notDrawn`: per block, 1 where this view leaves its tile out (planBlockView).
@@ -99,14 +119,22 @@ private:
     // GPU objects exist only once something is drawn ("model only what a scene needs").
     std::unique_ptr<ParticleGpuBuffer> buffer_;
     std::unique_ptr<LightSlicePass> slicePass_;
+    std::unique_ptr<LightSliceDepositPass> depositPass_;
+    std::unique_ptr<LightSlicePrefixPass> prefixPass_;
     std::unique_ptr<ParticlePass> particlePass_;
+    std::unique_ptr<ParticleLightingPass> lightingPass_;
+    std::unique_ptr<ParticleSplatPass> splatPass_;
     std::unique_ptr<BlockFrame> blockFrame_;  // blocks mode: this frame's partition and impostor plans
     std::unique_ptr<BlockGpuBuffers> blockBuffers_;
     std::unique_ptr<BlockImpostorRenderer> impostorRenderer_;
     std::unique_ptr<BlockCompositePass> blockCompositePass_;
     std::unique_ptr<BlockSlicePass> blockSlicePass_;
-    std::unique_ptr<MediaUpsamplePass> upsamplePass_;
+    std::unique_ptr<MediaDepthUsedPass> depthUsedPass_;
+    std::unique_ptr<SplatFloor> splatFloor_;
 };
+
+// Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
+bool eyeInsideMedium(const ParticleSet& particles, const render::View& view);
 
 // World bounds of the particle spheres.
 assets::Aabb particleBounds(const ParticleSet& particles);

@@ -9,6 +9,9 @@
 //                              2 · τ_column)), 4, 32)
 // where τ_p is one particle's peak optical depth and τ_column the largest optical depth along one
 // light ray, estimated on a 32×32 grid across the light's view of the medium.
+#include <cstdint>
+#include <vector>
+
 #include "nimbus/media/particle_set.h"
 #include "nimbus/render/light_views.h"
 
@@ -28,5 +31,21 @@ struct SliceEstimate {
 
 // `view` is a light view of the medium; `origin` the frame origin its matrices are relative to.
 SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightView& view, const glm::dvec3& origin);
+
+// The deposit form of the slices (light_slice_deposit_pass.cpp): every particle is drawn once into
+// each slab, between two consecutive slice planes, that its sphere reaches. Slab k spans view depth
+// [near + k·h, near + (k + 1)·h] (h = (far − near)/slices); the first reaches back to the light and
+// the last past the medium, so each particle's whole optical depth lands somewhere.
+inline constexpr std::uint32_t kSlabBits = 5;  // pieces pack particle << 5 | slab (slices ≤ 32)
+
+struct SlabRange {
+    int first = 0;  // the slab of the sphere's nearest depth
+    int last = -1;  // of its farthest; last < first: the view never sees the particle
+};
+SlabRange particleSlabs(double depth, double radius, bool perspective, double depthNear, double depthFar, int slices);
+
+// Appends the pieces of one view (particle << kSlabBits | slab), in particle order.
+void appendSlabPieces(const ParticleSet& particles, const render::LightView& view, const glm::dvec3& origin, int slices,
+                      std::vector<std::uint32_t>& pieces);
 
 }  // namespace nimbus::media

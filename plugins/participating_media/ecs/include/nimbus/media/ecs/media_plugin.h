@@ -8,6 +8,8 @@
 // and a scene spawner that reads each node's NIMBUS_participating_media object.
 // Every system returns at once, allocating nothing, when no entity has its components.
 #include <memory>
+#include <string>
+#include <utility>
 #include <string_view>
 #include <vector>
 
@@ -22,6 +24,20 @@
 namespace nimbus::media::ecs {
 
 inline constexpr char kEmitSystem[] = "media.emit";
+
+// The quality tiers (the `quality` setting, `sandbox render --quality`): each is a set of other
+// settings, which anything set explicitly overrides. `exact` is every per-fragment correction;
+// `balanced` and `fast` light each particle once per frame and touch fragments only for opacity.
+struct QualityPreset {
+    const char* name;
+    std::vector<std::pair<std::string, std::string>> settings;
+};
+inline const QualityPreset kQualityPresets[] = {
+    {"fast", {{"lighting", "particle"}, {"slice_deposit", "on"}, {"slices", "16"}, {"slice_resolution", "128"},
+              {"media_scale", "0.5"}, {"pcf_radius", "0"}, {"shadow_map_size", "1024"}}},
+    {"balanced", {{"lighting", "particle_exact"}, {"slice_deposit", "on"}}},
+    {"exact", {}},
+};
 inline constexpr char kLightSliceSystem[] = "media.light_slices";
 inline constexpr char kRenderSystem[] = "media.render";
 

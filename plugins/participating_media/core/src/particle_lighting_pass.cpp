@@ -1,0 +1,71 @@
+// Per-particle lighting (fast and balanced tiers): one compute invocation per particle, in draw
+// order, evaluates its source at five rays through its billboard (shaders/media/particle_lighting.comp)
+// into a buffer the splats read per vertex. Fragments then pay for opacity only.
+#include <algorithm>
+
+#include "media_passes.h"
+
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/render/frame_data.h"
+
+namespace nimbus::media {
+
+namespace {
+constexpr GLuint kShadowDepthUnit = 4;
+constexpr GLuint kLocalSize = 64;
+constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
+constexpr std::size_t kBytesPerParticle = (4 + kMaxFragmentLamps) * sizeof(glm::vec4);
+}  // namespace
+
+ParticleLightingPass::ParticleLightingPass()
+    : fast_(gpu::compileProgram({.compute = "media/particle_lighting.comp"})) {}
+
+void ParticleLightingPass::add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
+                               std::size_t particles, bool exact, const FragmentLamps& lamps) {
+    if (exact && !exact_)
+        exact_ = std::make_unique<LocalLightPrograms>(gpu::ProgramDesc{.compute = "media/particle_lighting.comp", .defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"}});
+    const gpu::Program& program = exact ? exact_->forLights(context.input.lights) : fast_;
+    const std::size_t bytes = std::max<std::size_t>(particles, 1) * kBytesPerParticle;  // the buffer fills when the upload pass runs
+    if (!light_ || capacity_ < bytes) {
+        capacity_ = std::max(bytes, capacity_ * 3 / 2);
+        light_ = gpu::createBuffer(capacity_, nullptr, 0);
+    }
+    struct Data {
+        render::ResourceHandle shadowMap, slices;
+    };
+    graph.addPass<Data>(
+        "media_particle_lighting",
+        [&](render::PassBuilder& builder, Data& d) {
+            if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            if (context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
+            builder.sideEffect();  // fills this pass's own buffer, which the splats read
+        },
+        [this, &program, &context, &buffer, lamps](const render::PassResources& resources, const Data& d) {
+            const auto count = static_cast<GLuint>(buffer.count());
+            glUseProgram(program.id());
+            context.frameData->bind();
+            buffer.bindParticles();
+            buffer.bindOrder();
+            buffer.bindLampNeighbourhoods();
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleLightBinding, light_.id());
+            if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
+            if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
+            glProgramUniform1ui(program.id(), 0, count);
+            glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.data());
+            glDispatchCompute((count + kLocalSize - 1) / kLocalSize, 1, 1);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        });
+}
+
+FragmentLamps fragmentLamps(const std::vector<assets::ResolvedLight>& lights) {
+    FragmentLamps lamps;
+    lamps.fill(-1);
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < lights.size() && k < lamps.size(); ++i)
+        if (lights[i].params.type != assets::LightType::Directional) lamps[k++] = static_cast<GLint>(i);
+    return lamps;
+}
+
+void ParticleLightingPass::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleLightBinding, light_.id()); }
+
+}  // namespace nimbus::media

@@ -1,0 +1,78 @@
+// Fast particles: the billboards of `particles` mode in the same back-to-front order, with the
+// source per vertex from the lighting pass and per fragment only the kernel's opacity from the
+// pre-integrated table (shaders/media/particle_splats.*). Blends exactly as ParticlePass does.
+#include "media_passes.h"
+
+#include "kernel_table.h"
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/render/frame_data.h"
+
+namespace nimbus::media {
+
+namespace {
+constexpr GLuint kKernelTableUnit = 6;
+constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
+}
+
+ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) { program(false, false); }
+
+const gpu::Program& ParticleSplatPass::program(bool eyeInside, bool lamps) {
+    gpu::Program& p = programs_[(eyeInside ? 1 : 0) + (lamps ? 2 : 0)];
+    if (!p) {
+        gpu::ProgramDesc desc{.vertex = "media/particle_splats.vert", .fragment = "media/particle_splats.frag"};
+        if (eyeInside) desc.defines.push_back("MEDIA_EYE_INSIDE");
+        if (lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
+        p = gpu::compileProgram(desc);
+    }
+    return p;
+}
+
+render::ResourceHandle ParticleSplatPass::add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
+                                              const ParticleLightingPass& lighting, bool eyeInside, const FragmentLamps& lamps,
+                                              const MediaTarget& target) {
+    const gpu::Program& program = this->program(eyeInside, lamps[0] >= 0);
+    struct Data {
+        render::ResourceHandle media, depth, slices;
+    };
+    const int w = target.size.x, h = target.size.y;
+    const auto& data = graph.addPass<Data>(
+        "media_particle_splats",
+        [&](render::PassBuilder& builder, Data& d) {
+            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.depth = builder.read(context.sceneDepth);
+            if (lamps[0] >= 0 && context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
+        },
+        [this, &program, &context, &buffer, &lighting, lamps, w, h, scale = target.fullResScale](const render::PassResources& resources,
+                                                                                          const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
+            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            glViewport(0, 0, w, h);
+            const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // no radiance, full transmittance
+            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+            glUseProgram(program.id());
+            context.frameData->bind();
+            buffer.bindParticles();
+            buffer.bindOrder();
+            lighting.bind();
+            glBindTextureUnit(render::kSceneDepthUnit, resources.id(d.depth));
+            glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
+            if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
+            glProgramUniform2f(program.id(), 1, scale.x, scale.y);
+            if (lamps[0] >= 0) glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.data());
+            glDisable(GL_DEPTH_TEST);
+            glDisable(GL_CULL_FACE);
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            glBindVertexArray(vertexArray_.id());
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
+            glBindVertexArray(0);
+            glDisable(GL_BLEND);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.media;
+}
+
+}  // namespace nimbus::media
