@@ -20,9 +20,13 @@ float meshVisibility(int lightIndex, vec3 p, vec3 offsetDir) {
     int radius = frame.counts.w;
     vec2 texelUv = vec2(1.0 / float(frame.counts.z));
     float lit = 0.0;
-    for (int y = -radius; y <= radius; ++y)
-        for (int x = -radius; x <= radius; ++x)
+    int y = -radius;
+    do {
+        int x = -radius;
+        do {
             lit += texture(shadowMap, vec4(uv + vec2(x, y) * texelUv, v.params2.x, ndc.z));
+        } while (++x <= radius);
+    } while (++y <= radius);
     float taps = float((2 * radius + 1) * (2 * radius + 1));
     return lit / taps;
 }

@@ -12,9 +12,10 @@ void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float sum = 0.0;
-    for (int k = 0; k < uSlices; ++k) {
+    int k = 0;
+    do {  // not for: llvmpipe runs a for loop's body once more, masked (slices ≥ 4)
         sum += texelFetch(uSlabs, ivec3(texel, uFirstSlab + k), 0).r;
         values[k / 4][k - 4 * (k / 4)] = sum;
-    }
+    } while (++k < uSlices);
     for (int a = 0; a < 8; ++a) outSlices[a] = values[a];
 }

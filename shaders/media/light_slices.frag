@@ -44,10 +44,11 @@ void main() {
     // Planes before the chord get nothing, planes after it the whole particle: only the few planes
     // that cut the chord need an erf.
     float total = scale * (erfApprox(sk * chord.halfChord) - entry);
-    for (int s = 0; s < slices; ++s) {
+    int s = 0;
+    do {  // not for: llvmpipe runs a for loop's body once more, masked (slices ≥ 4)
         float u = (uParams.y + float(s + 1) * spacing) / cosAxis - chord.tClosest;
         float value = u <= start ? 0.0 : u >= chord.halfChord ? total : scale * (erfApprox(sk * u) - entry);
         values[s / 4][s - 4 * (s / 4)] = value;
-    }
+    } while (++s < slices);
     for (int a = 0; a < 8; ++a) outSlices[a] = values[a];
 }

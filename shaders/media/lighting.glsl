@@ -186,7 +186,8 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
     vec3 entry = origin + dir * (c.tClosest + lo);
     float vBar = shadingDepthFraction(tau) * tau;
     vec3 scattered = frame.ambient.rgb;
-    for (int i = 0; i < frame.counts.x; ++i) {
+    int i = 0;
+    if (frame.counts.x > 0) do {  // not for: llvmpipe runs a for loop's body once more, masked
 #ifdef SEGMENT_SKIPS_LIGHT  // particle_lighting.comp: lights its fragments evaluate
         if (SEGMENT_SKIPS_LIGHT(i)) continue;
 #endif
@@ -217,6 +218,6 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
         float transmittance = exp(-particleLightDepth(i, p, particle));
 #endif
         scattered += scatteredLight(i, p, dir, particle, visibility, transmittance);
-    }
+    } while (++i < frame.counts.x);
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 }

@@ -43,13 +43,14 @@ vec3 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank)
     vec3 entry = origin + dir * (chord.tClosest + max(u0, -chord.halfChord));
     float vBar = shadingDepthFraction(tau) * tau;
     vec3 scattered = frame.ambient.rgb;
-    for (int i = 0; i < frame.counts.x; ++i) {
+    int i = 0;
+    if (frame.counts.x > 0) do {  // not for: llvmpipe runs a for loop's body once more, masked
         if (litPerFragment(i)) continue;
         // The light's transmittance over the whole layer, not at one point (lighting.glsl layerTransmittance).
         float atP = mediumOpticalDepth(i, p);
         float transmittance = vBar > 1e-4 && tau > 1e-4 ? layerTransmittance(mediumOpticalDepth(i, entry), atP, vBar, tau) : exp(-atP);
         scattered += scatteredLight(i, p, dir, particle, -1.0, transmittance);
-    }
+    } while (++i < frame.counts.x);
     return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
 #endif
 }
