@@ -49,8 +49,7 @@ nlohmann::json toJson(const BenchRun& run) {
         row["frame_ms"] = r.frameMs;
         row["media_ms"] = r.mediaMs;
         row["passes_ms"] = r.passMs;
-        row["media_fragments"] = r.mediaFragments;
-        row["fill_floor_ms"] = r.floorMs;
+        row["splat_floor_ms"] = r.floorMs;
         row["frame_over_floor"] = number(r.floorMs > 0.0 ? r.frameMs / r.floorMs : NAN);
         row["media_over_floor"] = number(r.floorMs > 0.0 ? r.mediaMs / r.floorMs : NAN);
         row["rel_rmse"] = number(r.error.relRmse);
@@ -68,7 +67,7 @@ nlohmann::json toJson(const BenchRun& run) {
 
 std::string markdownTable(const BenchRun& run) {
     std::ostringstream md;
-    md << "| setting | frame ms | media ms | × fill floor | rel-RMSE | PSNR dB | p99 abs | Pareto |\n";
+    md << "| setting | frame ms | media ms | × splat floor | rel-RMSE | PSNR dB | p99 abs | Pareto |\n";
     md << "|---|---:|---:|---:|---:|---:|---:|:-:|\n";
     for (const auto& r : run.results) {
         md << "| " << r.config.name << " | " << fixed(r.frameMs, 1) << " | " << fixed(r.mediaMs, 1) << " | "
@@ -82,7 +81,7 @@ std::string writeBenchFiles(const BenchRun& run, const std::filesystem::path& fo
     std::filesystem::create_directories(folder);
     writeText(folder / "bench.json", toJson(run).dump(2) + "\n");
     std::ostringstream csv;
-    csv << "setting,frame_ms,media_ms,fill_floor_ms,rel_rmse,psnr,p99_abs,nonfinite,slices,blocks,pareto\n";
+    csv << "setting,frame_ms,media_ms,splat_floor_ms,rel_rmse,psnr,p99_abs,nonfinite,slices,blocks,pareto\n";
     for (const auto& r : run.results)
         csv << '"' << r.config.name << "\"," << r.frameMs << ',' << r.mediaMs << ',' << r.floorMs << ',' << r.error.relRmse << ','
             << r.error.psnr << ',' << r.error.p99Abs << ',' << r.error.nonfinite << ',' << r.slices << ',' << r.blocks << ','

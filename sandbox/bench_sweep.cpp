@@ -6,7 +6,6 @@
 
 #include <epoxy/gl.h>
 
-#include "fill_rate_floor.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/media/block_partition.h"
 #include "nimbus/media/ecs/media_plugin.h"
@@ -17,10 +16,20 @@ namespace nimbus::sandbox {
 namespace {
 
 // Every key a configuration may set; each is cleared before the next configuration.
-const char* const kSweptKeys[] = {"mode", "slices", "blocks", "impostor_scale", "instancing", "media_scale", "soft_particles", "layer_light", "block_shading"};
+const char* const kSweptKeys[] = {"quality", "mode", "lighting", "slices", "slice_resolution", "slice_deposit", "blocks",
+                                  "impostor_scale", "instancing", "media_scale", "soft_particles", "layer_light",
+                                  "block_shading", "pcf_radius", "shadow_map_size"};
 
 bool isMediaPass(const std::string& name) {
     return name.rfind("light_slice", 0) == 0 || name.rfind("media_", 0) == 0 || name.rfind("block_", 0) == 0;
+}
+
+// The splat floor of the frame just rendered (media_renderer.h measureSplatFloor): 0 without media.
+double splatFloor(ecs::App& app, int width, int height, int repeats) {
+    const auto* media = app.world().tryResource<media::ecs::MediaRendererState>();
+    if (media == nullptr || !media->renderer) return 0.0;
+    const auto& state = app.resource<render::RendererState>();
+    return media->renderer->measureSplatFloor(render::makeView(state.lastInput.camera, width, height), repeats);
 }
 
 void renderFrame(ecs::App& app) {
@@ -37,6 +46,15 @@ std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, cons
     auto add = [&](std::string name, std::vector<std::pair<std::string, std::string>> settings) {
         sweep.push_back({std::move(name), std::move(settings)});
     };
+    // The tiers (quality presets) and the yardstick a typical engine ships, then the exact tier's
+    // settings one at a time. Rows without a quality are the exact tier's.
+    add("fast", {{"quality", "fast"}});
+    add("balanced", {{"quality", "balanced"}});
+    add("billboards", {{"mode", "billboards"}});
+    add("fast media_scale=1", {{"quality", "fast"}, {"media_scale", "1"}});
+    add("fast media_scale=0.25", {{"quality", "fast"}, {"media_scale", "0.25"}});
+    add("fast slices=8", {{"quality", "fast"}, {"slices", "8"}});
+    add("balanced media_scale=0.5", {{"quality", "balanced"}, {"media_scale", "0.5"}});
     add("particles", {{"mode", "particles"}});
     for (const char* slices : {"4", "8", "16", "32"}) add(std::string("particles slices=") + slices, {{"mode", "particles"}, {"slices", slices}});
     add("particles layer_light=off", {{"mode", "particles"}, {"layer_light", "off"}});
@@ -68,7 +86,6 @@ std::vector<BenchResult> runSweep(Session& session, const std::vector<BenchConfi
     request.enabled = true;
     request.settings.width = width;
     request.settings.height = height;
-    FillRateFloor floor(width, height);
     std::vector<BenchResult> results;
     for (std::size_t c = 0; c < configs.size(); ++c) {
         const BenchConfig& config = configs[c];
@@ -87,22 +104,16 @@ std::vector<BenchResult> runSweep(Session& session, const std::vector<BenchConfi
             frames.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
         r.frameMs = render::median(frames);
+        r.floorMs = splatFloor(app, width, height, timing.frames);  // right after the timed frames
 
-        render::GlPassTimer timer(/*countFragments=*/true);
+        render::GlPassTimer timer;
         request.timer = &timer;
         for (int i = 0; i < timing.frames; ++i) renderFrame(app);
         request.timer = nullptr;
-        std::vector<double> fragmentsPerFrame(static_cast<std::size_t>(timing.frames), 0.0);
         for (const auto& [pass, samples] : timer.samples()) {
             r.passMs[pass] = render::median(samples);
-            if (!isMediaPass(pass)) continue;
-            r.mediaMs += r.passMs[pass];
-            const auto& counts = timer.fragments().at(pass);
-            for (std::size_t f = 0; f < counts.size() && f < fragmentsPerFrame.size(); ++f)
-                fragmentsPerFrame[f] += static_cast<double>(counts[f]);
+            if (isMediaPass(pass)) r.mediaMs += r.passMs[pass];
         }
-        r.mediaFragments = static_cast<std::uint64_t>(render::median(fragmentsPerFrame));
-        r.floorMs = r.mediaFragments > 0 ? floor.measure(r.mediaFragments) : 0.0;
 
         const assets::RgbImage image = app.resource<render::RendererState>().renderer->readOutput();
         r.error = media::reference::compareImages(image, reference);

@@ -29,8 +29,7 @@ struct BenchResult {
     double frameMs = 0.0;                  // median over the timed frames
     std::map<std::string, double> passMs;  // per-pass medians (a separate, pass-synchronised run)
     double mediaMs = 0.0;                  // sum of the media passes' medians
-    std::uint64_t mediaFragments = 0;      // fragments the media passes wrote (median frame)
-    double floorMs = 0.0;                  // the fill-rate floor for those fragments
+    double floorMs = 0.0;                  // the splat floor: every particle's billboard blended once
     media::reference::ImageMetrics error;
     int slices = 0;
     int blocks = 0;

@@ -18,10 +18,7 @@ void renderFrame(ecs::World& world) {
         state.gpuScene = std::make_unique<GpuScene>(*asset.scene);
         state.uploaded = asset.scene.get();
     }
-    if (const auto* settings = world.tryResource<Settings>()) {
-        if (auto v = settings->integer("shadow_map_size", 64, 8192)) request.settings.shadowMapSize = static_cast<int>(*v);
-        if (auto v = settings->integer("pcf_radius", 0, 4)) request.settings.pcfRadius = static_cast<int>(*v);
-    }
+    if (const auto* settings = world.tryResource<Settings>()) readRenderSettings(*settings, request.settings);
     const auto& extensions = world.resource<RenderExtensions>().list;
     assets::Aabb extra;
     for (auto* e : extensions) extra.extend(e->bounds());
@@ -42,6 +39,14 @@ void RenderPlugin::build(ecs::App& app) {
     settings.declare("shadow_map_size", "mesh shadow map resolution per light view (default 2048)");
     settings.declare("pcf_radius", "mesh shadow PCF kernel radius in texels, 0..4 (default 1: 3x3 taps)");
     app.addSystem({.name = kRenderFrameSystem, .phase = ecs::phases::kRender}, renderFrame);
+}
+
+void readRenderSettings(const Settings& settings, RenderSettings& out) {
+    // Unset keys go back to their defaults: a preset switched off must not leave its values behind.
+    const auto shadowMapSize = settings.integer("shadow_map_size", 64, 8192);
+    const auto pcfRadius = settings.integer("pcf_radius", 0, 4);
+    out.shadowMapSize = shadowMapSize ? static_cast<int>(*shadowMapSize) : 0;
+    out.pcfRadius = pcfRadius ? static_cast<int>(*pcfRadius) : -1;
 }
 
 FrameInput gatherFrameInput(ecs::World& world, const RenderSettings& settings, std::string_view camera,

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <vector>
 
 namespace nimbus::media {
 namespace {
@@ -43,6 +46,34 @@ TEST(VisibleDepthOffset, DenserParticlesAreSeenFurtherInFront) {
         EXPECT_GT(offset, previous) << "σ " << sigma;
         previous = offset;
     }
+}
+
+// sortDescending must give exactly std::stable_sort's order (the exact tier's images depend on it).
+TEST(SortDescending, MatchesAStableSortIncludingTiesAndSigns) {
+    std::vector<float> keys;
+    std::uint32_t state = 12345u;
+    for (int i = 0; i < 5000; ++i) {
+        state = state * 1664525u + 1013904223u;
+        const float value = static_cast<float>(static_cast<int>(state >> 20) - 2048) * 0.25f;  // many ties, both signs
+        keys.push_back(i % 97 == 0 ? -0.0f : value);
+    }
+    keys.push_back(0.0f);
+    keys.push_back(3.0e38f);
+    keys.push_back(-3.0e38f);
+    std::vector<std::uint32_t> expected(keys.size());
+    std::iota(expected.begin(), expected.end(), 0u);
+    std::stable_sort(expected.begin(), expected.end(), [&](std::uint32_t a, std::uint32_t b) { return keys[a] > keys[b]; });
+    std::vector<std::uint32_t> order, scratch;
+    sortDescending(keys, order, scratch);
+    EXPECT_EQ(order, expected);
+}
+
+TEST(SortDescending, HandlesEmptyAndSingle) {
+    std::vector<std::uint32_t> order, scratch;
+    sortDescending({}, order, scratch);
+    EXPECT_TRUE(order.empty());
+    sortDescending({1.5f}, order, scratch);
+    EXPECT_EQ(order, std::vector<std::uint32_t>{0u});
 }
 
 }  // namespace

@@ -147,6 +147,20 @@ private:
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 
+// `billboards` mode: sprites lit per particle without shadows, one sprite fetch per fragment,
+// soft particles (the yardstick a typical engine ships).
+class BillboardPass {
+public:
+    BillboardPass();
+    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
+                               const MediaTarget& target);
+
+private:
+    gpu::Program program_;
+    gpu::Texture kernelTable_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
 // Seed 002: the view depth each reduced texel of the media target used, which the compose pass's
 // depth-aware upsampling compares with each full-resolution pixel's.
 class MediaDepthUsedPass {

@@ -34,13 +34,15 @@ constexpr int kMaxAtlasSize = 4096;
 MediaMode parseMediaMode(const std::string& text, const std::string& origin) {
     if (text == "particles") return MediaMode::Particles;
     if (text == "blocks") return MediaMode::Blocks;
-    throwInputError(origin, text, "", "unknown media mode (known: particles, blocks)");
+    if (text == "billboards") return MediaMode::Billboards;
+    throwInputError(origin, text, "", "unknown media mode (known: particles, blocks, billboards)");
 }
 
 const char* mediaModeName(MediaMode mode) {
     switch (mode) {
         case MediaMode::Particles: return "particles";
         case MediaMode::Blocks: return "blocks";
+        case MediaMode::Billboards: return "billboards";
     }
     return "unknown";
 }
@@ -53,6 +55,25 @@ assets::Aabb particleBounds(const ParticleSet& particles) {
         bounds.extend(particles.position[i] + r);
     }
     return bounds;
+}
+
+double splatCoverage(const ParticleSet& particles, const render::View& view) {
+    const double pixels = static_cast<double>(view.width) * view.height;
+    const glm::dmat4 viewMatrix(view.view);
+    // Pixels per metre at depth 1 (perspective) or per metre (orthographic), vertically.
+    const double scale = view.height / (2.0 * (view.orthographic ? view.orthoHalfExtent.y : view.tanHalfFovY));
+    double covered = 0.0;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const glm::dvec3 c(viewMatrix * glm::dvec4(particles.position[i] - view.origin, 1.0));
+        const double r = particles.radius[i], depth = -c.z;
+        if (!view.orthographic && depth <= r) {
+            covered += pixels;  // in front of or around the eye: a full-screen quad
+            continue;
+        }
+        const double half = r * scale / (view.orthographic ? 1.0 : depth);  // the quad's half size in pixels
+        covered += std::min(4.0 * half * half, pixels);
+    }
+    return covered / pixels;
 }
 
 bool eyeInsideMedium(const ParticleSet& particles, const render::View& view) {
@@ -135,6 +156,7 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
             buffer_->uploadLampNeighbourhoods(*particles_, context.input.lights, frame.blockRankOf, LampsListed::All, largestBlock);
         });
 
+    if (settings_.mode == MediaMode::Billboards) return;  // sprites without volumetric shadows: no slices
     const int resolution = settings_.sliceResolution > 0 ? settings_.sliceResolution : 256;
     std::vector<SliceView> views;
     int layers = 0;
@@ -210,7 +232,9 @@ float MediaRenderer::impostorScale() const { return settings_.impostorScale > 0.
 void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext& context) {
     if (particles_ == nullptr || particles_->empty()) return;
     const render::View& v = context.view;
-    const float scale = settings_.mediaScale > 0.0f ? std::min(settings_.mediaScale, 1.0f) : 1.0f;
+    float scale = settings_.mediaScale > 0.0f ? std::min(settings_.mediaScale, 1.0f) : 1.0f;
+    if (settings_.mediaScaleAuto) scale = splatCoverage(*particles_, v) > kHalfScaleCoverage ? 0.5f : 1.0f;
+    stats_.mediaScale = scale;
     MediaTarget target;
     target.size = glm::max(glm::ivec2(glm::round(glm::vec2(v.width, v.height) * scale)), glm::ivec2(1));
     target.fullResScale = glm::vec2(v.width, v.height) / glm::vec2(target.size);
@@ -252,6 +276,9 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
         }
         media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, builds,
                                          settings_.blockShading == BlockShading::Seam, *blockBuffers_, *buffer_, *impostorRenderer_, target);
+    } else if (settings_.mode == MediaMode::Billboards) {
+        if (!billboardPass_) billboardPass_ = std::make_unique<BillboardPass>();
+        media = billboardPass_->add(graph, context, *buffer_, target);
     } else if (settings_.lighting != ParticleLighting::Fragment) {
         if (!lightingPass_) lightingPass_ = std::make_unique<ParticleLightingPass>();
         if (!splatPass_) splatPass_ = std::make_unique<ParticleSplatPass>();

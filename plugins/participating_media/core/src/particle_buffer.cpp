@@ -1,7 +1,9 @@
 #include "particle_buffer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 
 namespace nimbus::media {
@@ -43,18 +45,45 @@ double visibleDepthOffset(double sigma, double radius) {
     return std::clamp(-1.4142135623730951 * w * deviation, 0.0, radius);
 }
 
+void sortDescending(const std::vector<float>& keys, std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& scratch) {
+    const std::size_t n = keys.size();
+    order.resize(n);
+    scratch.resize(n);
+    std::iota(order.begin(), order.end(), 0u);
+    // A float's bits made to order as unsigned integers, inverted so the largest key comes first.
+    auto rank = [&](std::uint32_t i) {
+        std::uint32_t bits = 0;
+        const float key = keys[i] + 0.0f;  // −0 and +0 are one key, as for operator>
+        std::memcpy(&bits, &key, sizeof bits);
+        return ~(bits & 0x80000000u ? ~bits : bits | 0x80000000u);
+    };
+    for (int shift = 0; shift < 32; shift += 8) {
+        std::array<std::uint32_t, 257> start{};
+        for (std::size_t k = 0; k < n; ++k) ++start[((rank(order[k]) >> shift) & 0xFFu) + 1];
+        for (std::size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+        for (std::size_t k = 0; k < n; ++k) scratch[start[(rank(order[k]) >> shift) & 0xFFu]++] = order[k];
+        order.swap(scratch);
+    }
+}
+
 void ParticleGpuBuffer::sortBackToFront(const ParticleSet& p, const render::View& view) {
-    order_cpu_.resize(p.size());
     keys_.resize(p.size());
-    std::iota(order_cpu_.begin(), order_cpu_.end(), 0u);
+    offsets_.resize(p.size());
+    offsetInputs_.resize(p.size(), glm::vec2(-1.0f));
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const glm::vec2 inputs(p.sigma[i], p.radius[i]);
+        if (inputs != offsetInputs_[i]) {
+            offsets_[i] = visibleDepthOffset(p.sigma[i], p.radius[i]);
+            offsetInputs_[i] = inputs;
+        }
+    }
     for (std::size_t i = 0; i < p.size(); ++i) {
         const glm::dvec3 d = p.position[i] - view.origin;
         // Perspective: distance from the eye; orthographic: depth along the view axis.
         const double centre = view.orthographic ? glm::dot(d, view.forward) : glm::length(d);
-        keys_[i] = static_cast<float>(centre - visibleDepthOffset(p.sigma[i], p.radius[i]));
+        keys_[i] = static_cast<float>(centre - offsets_[i]);
     }
-    // Stable, so equal keys keep a deterministic order.
-    std::stable_sort(order_cpu_.begin(), order_cpu_.end(), [&](std::uint32_t a, std::uint32_t b) { return keys_[a] > keys_[b]; });
+    sortDescending(keys_, order_cpu_, sortScratch_);
     ensureCapacity(order_, orderCapacity_, std::max<std::size_t>(order_cpu_.size(), 1) * sizeof(std::uint32_t));
     if (!order_cpu_.empty())
         glNamedBufferSubData(order_.id(), 0, static_cast<GLsizeiptr>(order_cpu_.size() * sizeof(std::uint32_t)), order_cpu_.data());

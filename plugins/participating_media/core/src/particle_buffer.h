@@ -29,6 +29,11 @@ struct alignas(16) GpuParticle {
 // another's dense tail and the lit top came out at the ambient (fresh stability seed 25 variant 04).
 double visibleDepthOffset(double sigma, double radius);
 
+// `order` ← 0..n−1 sorted by `keys` from the largest to the smallest, equal keys in index order:
+// what std::stable_sort with `>` gives, in four linear passes of an LSD radix sort (10⁶ particles
+// a frame). `scratch` is reused between calls.
+void sortDescending(const std::vector<float>& keys, std::vector<std::uint32_t>& order, std::vector<std::uint32_t>& scratch);
+
 class ParticleGpuBuffer {
 public:
     // Rewrites the instance buffer (grows it when needed; never shrinks, so steady frames allocate nothing).
@@ -54,6 +59,11 @@ private:
     std::vector<GpuParticle> staging_;
     std::vector<std::uint32_t> order_cpu_;
     std::vector<float> keys_;
+    std::vector<std::uint32_t> sortScratch_;
+    // visibleDepthOffset per particle and the (σ, R) it was computed for: recomputed only where
+    // they changed (its erf inverse is the costliest step of the sort at 10⁶ particles).
+    std::vector<double> offsets_;
+    std::vector<glm::vec2> offsetInputs_;
     std::vector<std::uint32_t> rank_;
     LampNeighbourhoods lamps_;
     LampNeighbourhoodBuffer lampBuffer_;

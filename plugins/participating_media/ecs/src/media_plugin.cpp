@@ -20,8 +20,6 @@ namespace {
 using nimbus::ecs::Entity;
 using nimbus::ecs::World;
 
-MediaRenderSettings readSettings(const Settings* settings);
-bool isQuality(const std::string& text);
 void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaScene& media);
 
 std::string settingText(const nlohmann::json& value) {
@@ -52,7 +50,7 @@ void applyRenderOverrides(World& world, const assets::Scene& scene, const MediaS
             settings->setDefault(it.key(), value, origin);
         }
     }
-    (void)readSettings(settings);  // a bad value is refused at load, naming the node and field
+    (void)readMediaSettings(settings);  // a bad value is refused at load, naming the node and field
 }
 
 void spawnMedia(World& world, const assets::Scene& scene) {
@@ -88,41 +86,6 @@ void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaSce
     }
 }
 
-bool isQuality(const std::string& text) {
-    return std::any_of(std::begin(kQualityPresets), std::end(kQualityPresets), [&](const QualityPreset& p) { return text == p.name; });
-}
-
-MediaRenderSettings readSettings(const Settings* settings) {
-    MediaRenderSettings s;
-    if (settings == nullptr) return s;
-    if (auto v = settings->text("quality"); v && !isQuality(*v))
-        throwInputError(settings->origin("quality"), *v, "", "unknown quality (known: fast, balanced, exact)");
-    if (auto v = settings->text("mode")) s.mode = parseMediaMode(*v, settings->origin("mode"));
-    if (auto v = settings->integer("slices", kMinSlices, kMaxSlices)) s.slices = static_cast<int>(*v);
-    if (auto v = settings->integer("slice_resolution", 16, 4096)) s.sliceResolution = static_cast<int>(*v);
-    if (auto v = settings->text("lighting")) {
-        if (*v == "fragment") s.lighting = ParticleLighting::Fragment;
-        else if (*v == "particle") s.lighting = ParticleLighting::Particle;
-        else if (*v == "particle_exact") s.lighting = ParticleLighting::ParticleExact;
-        else throwInputError(settings->origin("lighting"), *v, "", "unknown lighting (known: fragment, particle, particle_exact)");
-    }
-    if (auto v = settings->boolean("slice_deposit")) s.sliceDeposit = *v;
-    if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
-    if (auto v = settings->boolean("layer_light")) s.layerLight = *v;
-    if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
-    if (auto v = settings->number("impostor_scale", 0.05, 4.0)) s.impostorScale = static_cast<float>(*v);
-    if (auto v = settings->number("media_scale", 0.0625, 1.0)) s.mediaScale = static_cast<float>(*v);
-    if (auto v = settings->number("upsample_threshold", 1e-4, 10.0)) s.upsampleThreshold = static_cast<float>(*v);
-    if (auto v = settings->boolean("instancing")) s.instancing = *v;
-    if (auto v = settings->text("block_shading")) {
-        if (*v == "smooth") s.blockShading = BlockShading::Smooth;
-        else if (*v == "seam") s.blockShading = BlockShading::Seam;
-        else if (*v == "exact") s.blockShading = BlockShading::Exact;
-        else throwInputError("--set block_shading", *v, "", "unknown block shading (known: smooth, seam, exact)");
-    }
-    return s;
-}
-
 // One fixed step for every emitter: [k·dt, (k+1)·dt] with the node's transform at both ends (the
 // animation system has already moved it to the end). t0 comes from FrameInfo as k·dt, a product,
 // exactly as simulateEmittersTo computes it, so both paths give bit-identical particles.
@@ -139,7 +102,7 @@ void gatherSystem(World& world) {
     auto& frame = world.resource<MediaFrame>();
     frame.particles.clear();
     if (world.count<MediumComponent>() == 0) return;
-    frame.settings = readSettings(world.tryResource<Settings>());
+    frame.settings = readMediaSettings(world.tryResource<Settings>());
     gatherParticles(world, frame.particles);
 }
 
@@ -159,6 +122,47 @@ void renderSystem(World& world) {
 }
 
 }  // namespace
+
+namespace {
+
+bool isQuality(const std::string& text) {
+    return std::any_of(std::begin(kQualityPresets), std::end(kQualityPresets), [&](const QualityPreset& p) { return text == p.name; });
+}
+
+}  // namespace
+
+MediaRenderSettings readMediaSettings(const Settings* settings) {
+    MediaRenderSettings s;
+    if (settings == nullptr) return s;
+    if (auto v = settings->text("quality"); v && !isQuality(*v))
+        throwInputError(settings->origin("quality"), *v, "", "unknown quality (known: fast, balanced, exact)");
+    if (auto v = settings->text("mode")) s.mode = parseMediaMode(*v, settings->origin("mode"));
+    if (auto v = settings->integer("slices", kMinSlices, kMaxSlices)) s.slices = static_cast<int>(*v);
+    if (auto v = settings->integer("slice_resolution", 16, 4096)) s.sliceResolution = static_cast<int>(*v);
+    if (auto v = settings->text("lighting")) {
+        if (*v == "fragment") s.lighting = ParticleLighting::Fragment;
+        else if (*v == "particle") s.lighting = ParticleLighting::Particle;
+        else if (*v == "particle_exact") s.lighting = ParticleLighting::ParticleExact;
+        else throwInputError(settings->origin("lighting"), *v, "", "unknown lighting (known: fragment, particle, particle_exact)");
+    }
+    if (auto v = settings->boolean("slice_deposit")) s.sliceDeposit = *v;
+    if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
+    if (auto v = settings->boolean("layer_light")) s.layerLight = *v;
+    if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
+    if (auto v = settings->number("impostor_scale", 0.05, 4.0)) s.impostorScale = static_cast<float>(*v);
+    if (settings->text("media_scale") == "auto") s.mediaScaleAuto = true;
+    else if (auto v = settings->number("media_scale", 0.0625, 1.0)) s.mediaScale = static_cast<float>(*v);
+    if (auto v = settings->number("upsample_threshold", 1e-4, 10.0)) s.upsampleThreshold = static_cast<float>(*v);
+    if (auto v = settings->boolean("instancing")) s.instancing = *v;
+    if (auto v = settings->text("block_shading")) {
+        if (*v == "smooth") s.blockShading = BlockShading::Smooth;
+        else if (*v == "seam") s.blockShading = BlockShading::Seam;
+        else if (*v == "exact") s.blockShading = BlockShading::Exact;
+        else throwInputError("--set block_shading", *v, "", "unknown block shading (known: smooth, seam, exact)");
+    }
+    return s;
+}
+
 
 void gatherParticles(World& world, ParticleSet& out) {
     // Static clouds then emitters, each in glTF node order, as media::particlesAtTime does: views
@@ -201,7 +205,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)), more in optically thick media or around a lamp inside them)");
     settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
-    settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25 (default 1)");
+    settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25, or auto (0.5 where the particles cover the image more than 2.5 times over); default 1");
     settings.declare("instancing", "blocks mode: build the cloud from one block prototype instanced at every block (default off)");
     settings.declare("block_shading", "blocks mode, where a mesh is seen in the medium: seam (default: blocks shaded from their particles with the compositing order corrected near the mesh), smooth (faster there, but the mesh can show a seam) or exact (as seam over those blocks' whole rectangles; slowest)");
     settings.declare("upsample_threshold", "offscreen media: relative depth difference treated as an edge (default 0.2)");

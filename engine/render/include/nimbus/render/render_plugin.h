@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "nimbus/base/settings.h"
 #include "nimbus/ecs/app.h"
 #include "nimbus/ecs/plugin.h"
 #include "nimbus/render/scene_renderer.h"
@@ -44,6 +45,10 @@ public:
     std::string_view name() const override { return "nimbus.render"; }
     void build(ecs::App& app) override;
 };
+
+// The renderer's settings a Settings resource fixes (shadow_map_size, pcf_radius, directly or
+// through a preset); the others keep their values in `out`.
+void readRenderSettings(const Settings& settings, RenderSettings& out);
 
 // The frame input the render system would use now (camera, lights, instances), for tools and the
 // reference renderer, so every renderer sees the same camera and lights. Needs the SceneAsset.

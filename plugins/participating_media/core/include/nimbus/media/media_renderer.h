@@ -15,7 +15,9 @@
 
 namespace nimbus::media {
 
-enum class MediaMode { Particles, Blocks };
+// `billboards` is the yardstick a typical engine ships (lit sprites, no volumetric shadows): a
+// measured baseline for `sandbox bench`, not a feature to tune.
+enum class MediaMode { Particles, Blocks, Billboards };
 
 // How blocks mode shades the blocks where a mesh is seen inside the medium (block_passes.h
 // blocksShadedExactly): exactly is at up to 16 points placed by their own particles, with the
@@ -35,7 +37,7 @@ enum class ParticleLighting : std::uint8_t {
     ParticleExact,  // as Particle, each ray shaded as Fragment shades a pixel
 };
 
-// Parses "particles" or "blocks"; throws InputError naming the option for anything else.
+// Parses "particles", "blocks" or "billboards"; throws InputError naming the option for anything else.
 MediaMode parseMediaMode(const std::string& text, const std::string& origin = "--mode");
 const char* mediaModeName(MediaMode mode);
 
@@ -56,6 +58,8 @@ struct MediaRenderSettings {
     bool instancing = false;   // blocks mode: one block prototype instanced at every block (seed 000 §2's b + N/b)
     BlockShading blockShading = BlockShading::Seam;  // blocks mode: where a mesh is seen in the medium
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
+    bool mediaScaleAuto = false;  // ½ where the particles cover the image more than kHalfScaleCoverage times
+                                  // over (the half-resolution pass then pays for its upsampling), else 1
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2 (common/upsample.glsl)
 };
 
@@ -68,6 +72,7 @@ struct MediaFrameStats {
     int exactlyShadedBlocks = 0;         // blocks mode: blocks shaded exactly where a mesh is seen in the medium
                                          // (block_shading=seam: near the seam only)
     glm::ivec2 impostorAtlas{0};  // blocks mode: the camera's impostor atlas size
+    float mediaScale = 1.0f;      // the media target's resolution relative to the frame, this frame
 };
 
 class LightSlicePass;
@@ -81,6 +86,7 @@ class MediaDepthUsedPass;
 class ParticleLightingPass;
 class LightSliceDepositPass;
 class SplatFloor;
+class BillboardPass;
 class LightSlicePrefixPass;
 class ParticleSplatPass;
 struct BlockFrame;
@@ -131,7 +137,13 @@ private:
     std::unique_ptr<BlockSlicePass> blockSlicePass_;
     std::unique_ptr<MediaDepthUsedPass> depthUsedPass_;
     std::unique_ptr<SplatFloor> splatFloor_;
+    std::unique_ptr<BillboardPass> billboardPass_;
 };
+
+// How many times over the particles' billboards cover the image (Σ billboard area on screen /
+// image area), each clipped to the screen: what the splat floor pays for, estimated on the CPU.
+double splatCoverage(const ParticleSet& particles, const render::View& view);
+inline constexpr double kHalfScaleCoverage = 2.5;
 
 // Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
 bool eyeInsideMedium(const ParticleSet& particles, const render::View& view);

@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "nimbus/base/settings.h"
 #include "nimbus/ecs/app.h"
 #include "nimbus/ecs/plugin.h"
 #include "nimbus/media/emitter_simulation.h"
@@ -34,7 +35,7 @@ struct QualityPreset {
 };
 inline const QualityPreset kQualityPresets[] = {
     {"fast", {{"lighting", "particle"}, {"slice_deposit", "on"}, {"slices", "16"}, {"slice_resolution", "128"},
-              {"media_scale", "0.5"}, {"pcf_radius", "0"}, {"shadow_map_size", "1024"}}},
+              {"media_scale", "auto"}, {"pcf_radius", "0"}, {"shadow_map_size", "1024"}}},
     {"balanced", {{"lighting", "particle_exact"}, {"slice_deposit", "on"}}},
     {"exact", {}},
 };
@@ -75,6 +76,10 @@ public:
     std::string_view name() const override { return "nimbus.participating_media"; }
     void build(nimbus::ecs::App& app) override;
 };
+
+// The media renderer's settings a Settings resource fixes (directly or through the quality
+// preset); InputError naming where a bad value came from.
+MediaRenderSettings readMediaSettings(const Settings* settings);
 
 // Gathers the particle set the renderers draw from the ECS state (also what `sandbox reference`
 // renders, so both see exactly the same particles).
