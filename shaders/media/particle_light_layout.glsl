@@ -3,7 +3,7 @@
 // source's fit over the billboard, particle_lighting.comp), then per fragment-evaluated lamp the
 // part of its light taken per particle (albedo × mesh visibility).
 const int MAX_FRAGMENT_LAMPS = 2;
-const uint PARTICLE_LIGHT_STRIDE = 4u + uint(MAX_FRAGMENT_LAMPS);
+const uint PARTICLE_LIGHT_STRIDE = 7u + uint(MAX_FRAGMENT_LAMPS);
 
 // The point or spot lights whose 1/d² the fragments evaluate (−1: none); every other light is
 // taken per particle.

@@ -25,7 +25,8 @@ layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
 layout(std430, binding = 10) writeonly buffer ParticleLight { vec4 particleLight[]; };  // per rank: see PARTICLE_LIGHT_STRIDE
 layout(location = 0) uniform uint uCount;
 
-const float SAMPLE_OFFSET = 0.7;
+const float SAMPLE_OFFSET = 0.5;
+const float OUTER_OFFSET = 0.9;
 
 vec3 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank) {
     float radius = particle.positionRadius.w;
@@ -92,7 +93,7 @@ void main() {
     Billboard b = billboardOf(centre, radius);
     vec3 j0 = sourceThrough(centre, particle, index, int(rank));
     float shadingOffset = centreShadingOffset(centre, particle);
-    vec3 gx = vec3(0.0), gy = vec3(0.0), radial = vec3(0.0);
+    vec3 gx = vec3(0.0), gy = vec3(0.0), radial = vec3(0.0), quartic = vec3(0.0), cubicX = vec3(0.0), cubicY = vec3(0.0);
     if (!b.coversScreen) {  // a quad that covers the screen has no billboard coordinates: J0 throughout
         vec3 dx = b.right * SAMPLE_OFFSET, dy = b.up * SAMPLE_OFFSET;
         vec3 px = sourceThrough(centre + dx, particle, index, int(rank)), mx = sourceThrough(centre - dx, particle, index, int(rank));
@@ -103,17 +104,39 @@ void main() {
         // centre, so J grows towards the silhouette on every side, which no linear field follows.
         float ring = impactSquared(centre + dx, centre, radius);
         if (ring > 1e-6) radial = (0.25 * (px + mx + py + my) - j0) / ring;
+        // Outer ring: odd cubic terms per axis and a quartic radial term.
+        vec3 ex = b.right * OUTER_OFFSET, ey = b.up * OUTER_OFFSET;
+        vec3 opx = sourceThrough(centre + ex, particle, index, int(rank)), omx = sourceThrough(centre - ex, particle, index, int(rank));
+        vec3 opy = sourceThrough(centre + ey, particle, index, int(rank)), omy = sourceThrough(centre - ey, particle, index, int(rank));
+        float a = SAMPLE_OFFSET, c = OUTER_OFFSET;
+        // odd: f(q) = g q + k q³ through (a, oa) and (c, oc)
+        vec3 oa_x = 0.5 * (px - mx), oc_x = 0.5 * (opx - omx), oa_y = 0.5 * (py - my), oc_y = 0.5 * (opy - omy);
+        float det = a * c * c * c - c * a * a * a;
+        gx = (oa_x * c * c * c - oc_x * a * a * a) / det;
+        gy = (oa_y * c * c * c - oc_y * a * a * a) / det;
+        cubicX = (a * oc_x - c * oa_x) / det;
+        cubicY = (a * oc_y - c * oa_y) / det;
+        float ring2 = impactSquared(centre + ex, centre, radius);
+        float d2 = ring * ring2 * ring2 - ring2 * ring * ring;
+        if (abs(d2) > 1e-9) {
+            vec3 ea = 0.25 * (px + mx + py + my) - j0, ec = 0.25 * (opx + omx + opy + omy) - j0;
+            radial = (ea * ring2 * ring2 - ec * ring * ring) / d2;
+            quartic = (ec * ring - ea * ring2) / d2;
+        }
     }
     uint base = PARTICLE_LIGHT_STRIDE * rank;
     particleLight[base] = vec4(j0, shadingOffset);
     particleLight[base + 1u] = vec4(gx, 0.0);
     particleLight[base + 2u] = vec4(gy, 0.0);
     particleLight[base + 3u] = vec4(radial, 0.0);
+    particleLight[base + 4u] = vec4(quartic, 0.0);
+    particleLight[base + 5u] = vec4(cubicX, 0.0);
+    particleLight[base + 6u] = vec4(cubicY, 0.0);
     // The lamps the fragments evaluate: what does not vary across the particle, taken at its centre.
     for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) {
         int i = uFragmentLamps[k];
         vec3 factor = vec3(0.0);
         if (i >= 0) factor = particle.albedoSigma.rgb * mediumMeshVisibility(i, centre, radius / 3.0);
-        particleLight[base + 4u + uint(k)] = vec4(factor, 0.0);
+        particleLight[base + 7u + uint(k)] = vec4(factor, 0.0);
     }
 }

@@ -21,6 +21,8 @@ flat in vec4 vCentreRadius;
 flat in float vSigma;
 in vec3 vSource;
 flat in vec3 vRadial;
+flat in vec3 vQuartic, vCubicX, vCubicY;
+in vec2 vCorner;
 #ifdef MEDIA_FRAGMENT_LAMPS
 flat in vec3 vLampFactor[MAX_FRAGMENT_LAMPS];
 flat in vec3 vPhase;
@@ -74,7 +76,7 @@ void main() {
     segment -= kernelSegment(beta, -tc * invRadius);
 #endif
     float alpha = oneMinusExpNeg(vSigma * vCentreRadius.w * max(segment, 0.0));
-    vec3 source = max(vSource + vRadial * beta2, vec3(0.0));
+    vec3 source = max(vSource + (vRadial + vQuartic * beta2) * beta2 + vCubicX * (vCorner.x * vCorner.x * vCorner.x) + vCubicY * (vCorner.y * vCorner.y * vCorner.y), vec3(0.0));
 #ifdef MEDIA_FRAGMENT_LAMPS
     float radius = vCentreRadius.w;
     float h = sqrt(max(radius * radius - dot(perp, perp), 0.0));

@@ -14,6 +14,8 @@ flat out vec4 vCentreRadius;  // origin-relative centre, radius
 flat out float vSigma;
 out vec3 vSource;             // J's linear part (an affine function of the billboard's plane: exact)
 flat out vec3 vRadial;        // J's radial part per β²
+flat out vec3 vQuartic, vCubicX, vCubicY;
+out vec2 vCorner;
 #ifdef MEDIA_FRAGMENT_LAMPS
 flat out vec3 vLampFactor[MAX_FRAGMENT_LAMPS];
 flat out vec3 vPhase;         // x: phase function (0 HG, 1 Rayleigh), y: g, z: shading offset along the ray
@@ -31,8 +33,12 @@ void main() {
     uint base = PARTICLE_LIGHT_STRIDE * uint(rank);
     vec3 j0 = particleLight[base].rgb;
     vRadial = particleLight[base + 3u].rgb;
+    vQuartic = particleLight[base + 4u].rgb;
+    vCubicX = particleLight[base + 5u].rgb;
+    vCubicY = particleLight[base + 6u].rgb;
+    vCorner = corner;
 #ifdef MEDIA_FRAGMENT_LAMPS
-    for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) vLampFactor[k] = particleLight[base + 4u + uint(k)].rgb;
+    for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) vLampFactor[k] = particleLight[base + 7u + uint(k)].rgb;
     vPhase = vec3(particles[index].extra.x, particles[index].emissionG.w, particleLight[base].w);
 #endif
     Billboard b = billboardOf(pr.xyz, pr.w);

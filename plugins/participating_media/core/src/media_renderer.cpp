@@ -157,9 +157,9 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
         });
 
     if (settings_.mode == MediaMode::Billboards) return;  // sprites without volumetric shadows: no slices
-    const int resolution = settings_.sliceResolution > 0 ? settings_.sliceResolution : 256;
     std::vector<SliceView> views;
-    int layers = 0;
+    int layers = 0, resolution = settings_.sliceResolution > 0 ? settings_.sliceResolution : 256;
+    if (settings_.sliceTexelsPerRadius > 0.0f) resolution = 0;  // automatic: the largest any view needs
     context.transmittance.perLight.assign(context.input.lights.size(), glm::ivec2(0));
     for (std::size_t i = 0; i < context.input.lights.size(); ++i) {
         const auto& light = context.input.lights[i];
@@ -168,20 +168,22 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
             if (glm::length(nearest - light.position) >= light.params.range) continue;  // out of reach
         }
         const auto lightViews = render::makeLightViews(light, bounds_, context.view.origin);
-        context.transmittance.perLight[i] = glm::ivec2(static_cast<int>(context.transmittance.views.size()),
-                                                       static_cast<int>(lightViews.size()));
+        context.transmittance.perLight[i] = glm::ivec2(static_cast<int>(views.size()), static_cast<int>(lightViews.size()));
         for (auto view : lightViews) {
             const SliceEstimate estimate = estimateSlices(*particles_, view, context.view.origin);
             const int slices = settings_.slices > 0 ? std::clamp(settings_.slices, kMinSlices, kMaxSlices) : estimate.slices;
             view.depthNear = static_cast<float>(estimate.depthNear);
             view.depthFar = static_cast<float>(estimate.depthFar);
+            if (settings_.sliceTexelsPerRadius > 0.0f)
+                resolution = std::max(resolution, sliceResolutionFor(estimate, view, settings_.sliceTexelsPerRadius));
             views.push_back({view, glm::vec3(light.position - context.view.origin), slices, layers});
-            context.transmittance.views.push_back(
-                render::packLightView(view, layers, static_cast<float>(slices), static_cast<float>(resolution)));
             layers += (slices + 3) / 4;
             stats_.slices = std::max(stats_.slices, slices);
         }
     }
+    for (const SliceView& v : views)
+        context.transmittance.views.push_back(render::packLightView(v.view, v.firstLayer, static_cast<float>(v.slices), static_cast<float>(resolution)));
+    stats_.sliceResolution = resolution;
     stats_.sliceViews = static_cast<int>(views.size());
     if (views.empty()) return;
     if (blocks) {
@@ -198,7 +200,11 @@ void MediaRenderer::beforeOpaque(render::FrameGraph& graph, render::FrameContext
                                                            *buffer_, *impostorRenderer_);
         return;
     }
-    if (settings_.sliceDeposit && LightSliceDepositPass::supported()) {
+    // Deposit pays per slab a particle reaches; around a lamp inside the medium every particle
+    // that reaches the lamp's plane covers a whole cube face in each, and drawing it once wins.
+    const bool lampViews = std::any_of(views.begin(), views.end(), [](const SliceView& v) { return v.view.perspective; });
+    const bool deposit = settings_.sliceDeposit == SliceDeposit::On || (settings_.sliceDeposit == SliceDeposit::Auto && !lampViews);
+    if (deposit && LightSliceDepositPass::supported()) {
         std::vector<std::uint32_t> pieces;
         std::vector<int> firstPiece{0};
         for (const SliceView& v : views) {

@@ -14,7 +14,7 @@ namespace {
 constexpr GLuint kShadowDepthUnit = 4;
 constexpr GLuint kLocalSize = 64;
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
-constexpr std::size_t kBytesPerParticle = (4 + kMaxFragmentLamps) * sizeof(glm::vec4);
+constexpr std::size_t kBytesPerParticle = (7 + kMaxFragmentLamps) * sizeof(glm::vec4);
 }  // namespace
 
 ParticleLightingPass::ParticleLightingPass()

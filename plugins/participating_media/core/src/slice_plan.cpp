@@ -17,6 +17,8 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
     const glm::dmat4 projection = glm::dmat4(view.viewProjection) * glm::inverse(viewMatrix);
     double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest, radiusSum = 0.0;
     double densest = 0.0;  // max over particles of √τ_p / R_p (τ_p: its peak column)
+    std::vector<double> spans;
+    spans.reserve(particles.size());
     // Peak column of one particle through its centre: σ ∫ e^{−k u²} du over the chord ≈ 0.8355·σR.
     const double columnPerSigmaRadius = std::sqrt(kPi / kKernelFalloff) * std::erf(std::sqrt(kKernelFalloff));
     for (std::size_t i = 0; i < particles.size(); ++i) {
@@ -26,6 +28,8 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
         nearest = std::min(nearest, depth - r);
         farthest = std::max(farthest, depth + r);
         radiusSum += r;
+        if (!view.perspective) spans.push_back(r);
+        else if (depth > 0.0) spans.push_back(r / std::max(glm::length(glm::dvec3(v)), r));
         if (r > 0.0) densest = std::max(densest, std::sqrt(columnPerSigmaRadius * particles.sigma[i] * r) / r);
         const glm::dvec4 clip = projection * v;
         if (clip.w <= 0.0) continue;
@@ -38,6 +42,10 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
     e.depthFar = std::max(farthest, e.depthNear + 1e-6);
     e.depthExtent = e.depthFar - e.depthNear;
     e.meanRadius = radiusSum / static_cast<double>(particles.size());
+    if (!spans.empty()) {
+        std::nth_element(spans.begin(), spans.begin() + static_cast<std::ptrdiff_t>(spans.size() / 2), spans.end());
+        e.medianSpan = spans[spans.size() / 2];
+    }
     e.columnDepth = *std::max_element(column.begin(), column.end());
     double wanted = std::max(e.meanRadius > 0.0 ? e.depthExtent / e.meanRadius : 0.0, 2.0 * e.columnDepth);
     // Linear interpolation of one particle's τ_p·Φ(x/s) (s = R/3) across a spacing h errs by up to
@@ -53,6 +61,15 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightVi
     const int rounded = 4 * static_cast<int>(std::ceil(std::min(wanted, static_cast<double>(kMaxSlices)) / 4.0));
     e.slices = std::clamp(rounded, kMinSlices, kMaxSlices);
     return e;
+}
+
+int sliceResolutionFor(const SliceEstimate& estimate, const render::LightView& view, double texelsPerRadius) {
+    constexpr int kMin = 32, kMax = 256;
+    if (!(estimate.medianSpan > 0.0)) return kMax;
+    // The view spans 2·halfExtent (metres, or tan of the half angle) over its texels.
+    const double wanted = 2.0 * static_cast<double>(std::max(view.halfExtent.x, view.halfExtent.y)) * texelsPerRadius / estimate.medianSpan;
+    const int rounded = 16 * static_cast<int>(std::ceil(std::min(wanted, static_cast<double>(kMax)) / 16.0));
+    return std::clamp(rounded, kMin, kMax);
 }
 
 SlabRange particleSlabs(double depth, double radius, bool perspective, double depthNear, double depthFar, int slices) {

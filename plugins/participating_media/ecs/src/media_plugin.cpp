@@ -138,14 +138,20 @@ MediaRenderSettings readMediaSettings(const Settings* settings) {
         throwInputError(settings->origin("quality"), *v, "", "unknown quality (known: fast, balanced, exact)");
     if (auto v = settings->text("mode")) s.mode = parseMediaMode(*v, settings->origin("mode"));
     if (auto v = settings->integer("slices", kMinSlices, kMaxSlices)) s.slices = static_cast<int>(*v);
-    if (auto v = settings->integer("slice_resolution", 16, 4096)) s.sliceResolution = static_cast<int>(*v);
+    if (settings->text("slice_resolution") == "auto") {
+        const auto detail = settings->number("slice_detail", 0.25, 16.0);
+        s.sliceTexelsPerRadius = detail ? static_cast<float>(*detail) : 3.0f;
+    } else if (auto v = settings->integer("slice_resolution", 16, 4096)) {
+        s.sliceResolution = static_cast<int>(*v);
+    }
     if (auto v = settings->text("lighting")) {
         if (*v == "fragment") s.lighting = ParticleLighting::Fragment;
         else if (*v == "particle") s.lighting = ParticleLighting::Particle;
         else if (*v == "particle_exact") s.lighting = ParticleLighting::ParticleExact;
         else throwInputError(settings->origin("lighting"), *v, "", "unknown lighting (known: fragment, particle, particle_exact)");
     }
-    if (auto v = settings->boolean("slice_deposit")) s.sliceDeposit = *v;
+    if (settings->text("slice_deposit") == "auto") s.sliceDeposit = SliceDeposit::Auto;
+    else if (auto v = settings->boolean("slice_deposit")) s.sliceDeposit = *v ? SliceDeposit::On : SliceDeposit::Off;
     if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
     if (auto v = settings->boolean("layer_light")) s.layerLight = *v;
     if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
@@ -198,9 +204,10 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
         settings.definePreset("quality", preset.name, {preset.settings.begin(), preset.settings.end()});
     settings.declare("mode", "media mode: particles (default) or blocks");
     settings.declare("slices", "light slices per light view, 4..32 (default: chosen from the medium)");
-    settings.declare("slice_resolution", "texels per side of a light slice (default 256)");
+    settings.declare("slice_resolution", "texels per side of a light slice, or auto (chosen from the particles' size as the light sees them; see slice_detail); default 256");
     settings.declare("lighting", "particles mode: where light is evaluated: fragment (default, exact), particle (per particle, linear across it) or particle_exact");
-    settings.declare("slice_deposit", "light slices drawn as one float per particle and slab, then summed: on or off (default)");
+    settings.declare("slice_detail", "with slice_resolution=auto: slice texels across the median particle's radius, 0.25..16 (default 3)");
+    settings.declare("slice_deposit", "light slices drawn as one float per particle and slab, then summed: on, off (default) or auto (on unless a point or spot light's views are among them)");
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
     settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)), more in optically thick media or around a lamp inside them)");

@@ -29,6 +29,8 @@ enum class BlockShading : std::uint8_t {
     Exact,   // exactly over those blocks' whole rectangles
 };
 
+enum class SliceDeposit : std::uint8_t { Off, On, Auto };
+
 // Where `particles` mode evaluates each particle's light (the source J of DESIGN.md §2).
 enum class ParticleLighting : std::uint8_t {
     Fragment,       // per fragment, with every correction: the exact tier
@@ -46,8 +48,11 @@ struct MediaRenderSettings {
     MediaMode mode = MediaMode::Particles;
     int slices = 0;            // per light view; 0: chosen from the medium (see slice_plan.h), else 4..32
     int sliceResolution = 0;   // texels per side of a slice; 0: 256
-    bool sliceDeposit = false; // slices as one float per particle and slab, then a running sum (the fast
-                               // tiers; bit for bit apart from the exact pass, within float rounding)
+    float sliceTexelsPerRadius = 0.0f;  // > 0: the resolution instead puts this many texels across the
+                                        // median particle's radius (slice_plan.h sliceResolutionFor)
+    // Slices as one float per particle and slab, then a running sum (the same values as the exact
+    // pass within float rounding); auto: unless a lamp's views are among them.
+    SliceDeposit sliceDeposit = SliceDeposit::Off;
     ParticleLighting lighting = ParticleLighting::Fragment;  // particles mode
     bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
     bool layerLight = true;    // particles mode: integrate the light's transmittance over each particle's layer
@@ -66,6 +71,7 @@ struct MediaRenderSettings {
 struct MediaFrameStats {
     std::size_t particles = 0;
     int slices = 0;            // per light view, this frame
+    int sliceResolution = 0;   // texels per side, this frame
     int sliceViews = 0;        // light views that got slices
     int blocks = 0;            // blocks mode: blocks this frame
     std::size_t lampSliceParticles = 0;  // blocks mode: particles the lamps' slices take one by one (block_partition.h)

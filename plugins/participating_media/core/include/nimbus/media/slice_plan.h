@@ -27,7 +27,14 @@ struct SliceEstimate {
     double meanRadius = 0.0;
     double columnDepth = 0.0;   // τ_column
     int slices = kMinSlices;
+    double medianSpan = 0.0;    // the median particle's radius across the view: metres (orthographic)
+                                // or tan of its angular radius from the light (perspective)
 };
+
+// The slice resolution that puts `texelsPerRadius` texels across the median particle's radius
+// (slice_resolution=auto), a multiple of 16 in [32, 256]: a lamp's cube faces need far fewer
+// texels than the fixed 256 where its particles subtend degrees.
+int sliceResolutionFor(const SliceEstimate& estimate, const render::LightView& view, double texelsPerRadius);
 
 // `view` is a light view of the medium; `origin` the frame origin its matrices are relative to.
 SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightView& view, const glm::dvec3& origin);

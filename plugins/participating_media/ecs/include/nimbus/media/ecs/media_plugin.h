@@ -34,9 +34,9 @@ struct QualityPreset {
     std::vector<std::pair<std::string, std::string>> settings;
 };
 inline const QualityPreset kQualityPresets[] = {
-    {"fast", {{"lighting", "particle"}, {"slice_deposit", "on"}, {"slices", "16"}, {"slice_resolution", "128"},
-              {"media_scale", "auto"}, {"pcf_radius", "0"}, {"shadow_map_size", "1024"}}},
-    {"balanced", {{"lighting", "particle_exact"}, {"slice_deposit", "on"}}},
+    {"fast", {{"lighting", "particle"}, {"slice_deposit", "auto"}, {"slices", "16"}, {"slice_resolution", "auto"},
+              {"slice_detail", "2"}, {"media_scale", "auto"}, {"pcf_radius", "0"}, {"shadow_map_size", "1024"}}},
+    {"balanced", {{"lighting", "particle_exact"}, {"slice_deposit", "auto"}, {"slice_resolution", "auto"}, {"slice_detail", "4"}}},
     {"exact", {}},
 };
 inline constexpr char kLightSliceSystem[] = "media.light_slices";
