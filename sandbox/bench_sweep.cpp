@@ -51,10 +51,13 @@ std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, cons
     add("fast", {{"quality", "fast"}});
     add("balanced", {{"quality", "balanced"}});
     add("billboards", {{"mode", "billboards"}});
-    add("fast media_scale=1", {{"quality", "fast"}, {"media_scale", "1"}});
-    add("fast media_scale=0.25", {{"quality", "fast"}, {"media_scale", "0.25"}});
+    // The budget's quality ladder (media_plugin.h), so its order can be checked against the errors.
+    for (const auto& rung : media::ecs::kQualityLadder) {
+        if (std::string(rung.name) == "exact") continue;  // the `particles` row below
+        if (std::none_of(sweep.begin(), sweep.end(), [&](const BenchConfig& c) { return c.name == rung.name; }))
+            add(rung.name, {rung.settings.begin(), rung.settings.end()});
+    }
     add("fast slices=8", {{"quality", "fast"}, {"slices", "8"}});
-    add("balanced media_scale=0.5", {{"quality", "balanced"}, {"media_scale", "0.5"}});
     add("particles", {{"mode", "particles"}});
     for (const char* slices : {"4", "8", "16", "32"}) add(std::string("particles slices=") + slices, {{"mode", "particles"}, {"slices", slices}});
     add("particles layer_light=off", {{"mode", "particles"}, {"layer_light", "off"}});

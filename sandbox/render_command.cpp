@@ -1,10 +1,12 @@
-// sandbox render SCENE [--out F] [--size WxH] [--mode M] [--time T] [--camera NAME] [--set K=V]...
+// sandbox render SCENE [--out F] [--size WxH] [--mode M] [--quality Q] [--budget-ms B] [--time T] [--camera NAME] [--set K=V]...
 //                      [--stats F.json] [--frames N] [--exposure E]
 // Renders the scene headless (EGL) with the real-time renderer. With --stats it measures: the
 // median frame time over N (≥ 20) GPU-synchronised frames after warm-up, and per-pass medians over
 // another N frames timed pass by pass (synchronising each pass inflates the total, so the two are
 // measured separately).
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -19,6 +21,7 @@
 #include "nimbus/media/ecs/media_plugin.h"
 #include "nimbus/render/pass_timer.h"
 #include "nimbus/render/render_plugin.h"
+#include "frame_budget_walk.h"
 #include "session.h"
 
 namespace nimbus::sandbox {
@@ -37,7 +40,18 @@ struct RenderOptions {
     int frames = 20;
     float exposure = 1.0f;
     bool floor = false;
+    std::string budget;  // --budget-ms, as typed
 };
+
+// --budget-ms: a finite positive number of milliseconds; 0 when not given.
+double parseBudget(const std::string& text) {
+    if (text.empty()) return 0.0;
+    double ms = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), ms);
+    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(ms) || !(ms > 0.0))
+        throwInputError("--budget-ms", text, "", "expected a positive number of milliseconds per frame");
+    return ms;
+}
 
 void renderFrame(ecs::App& app) {
     app.runPhase(ecs::phases::kPrepare);
@@ -49,6 +63,7 @@ int run(const RenderOptions& o) {
     int width = 0, height = 0;
     parseSize(o.size, width, height);
     if (o.frames < 20) throwInputError("--frames", std::to_string(o.frames), "", "at least 20 frames are timed");
+    const double budgetMs = parseBudget(o.budget);
 
     SessionOptions options{o.scene, o.time, o.settings};
     if (!o.mode.empty()) options.options.emplace_back("mode=" + o.mode, "--mode");
@@ -66,6 +81,13 @@ int run(const RenderOptions& o) {
 
     using Clock = std::chrono::steady_clock;
     nlohmann::json stats;
+    if (budgetMs > 0.0) {
+        const BudgetChoice choice = settleOnBudget(app, budgetMs);
+        std::printf("budget %.1f ms: chose %s (median %.1f ms while walking the quality ladder, %d frames)\n", budgetMs,
+                    choice.rung.c_str(), choice.medianMs, choice.framesRendered);
+        stats["budget_ms"] = budgetMs;
+        stats["chosen"] = choice.rung;
+    }
     renderFrame(app);
     if (!o.stats.empty()) {
         for (int i = 0; i < 3; ++i) renderFrame(app);  // warm-up: shader compiles, pool fills
@@ -150,6 +172,8 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
     cmd->add_option("--mode", options->mode, "media mode: particles (default) or blocks");
     cmd->add_option("--quality", options->quality, "fast, balanced (default) or exact");
+    cmd->add_option("--budget-ms", options->budget,
+                    "frame budget: walk the quality ladder and keep the lowest-error setting whose frames fit");
     cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));
     cmd->add_option("--camera", options->camera, "camera (camera or node name); default: the scene's first");
     cmd->add_option("--set", options->settings, "KEY=VALUE setting (repeatable)");

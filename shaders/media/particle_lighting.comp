@@ -1,12 +1,16 @@
 #version 450 core
-// Per-particle lighting (media/particle_lighting_pass.cpp): the source J of each particle along five
-// camera rays through its billboard, the centre and ±SAMPLE_OFFSET along its right and up axes,
-// fitted as J0 + gx·x + gy·y + r·β² (x, y the billboard's corner coordinates in [−1, 1], β the
-// ray's impact parameter in radii): particle_splats.vert interpolates the linear part, the
-// fragments add the radial one. Fragments then only fetch the kernel's opacity.
-// LIGHTING_EXACT evaluates each ray as particles.frag shades a pixel (segmentSource); otherwise
-// light is taken at the ray's shading point: phase, the mesh shadow map with seed 001's smooth
-// weighting over the particle's depth, and the slices' transmittance integrated over the layer.
+// Per-particle lighting (media/particle_lighting_pass.cpp): each particle's source along nine camera
+// rays through its billboard (the centre, and ±0.5 and ±0.9 of its half size along its right and
+// up axes), fitted over the billboard as
+//     F(x, y, β) = F0 + gx·x + gy·y + (r2 + r4·β²)·β² + cx·x³ + cy·y³
+// (x, y its corner coordinates in [−1, 1], β the ray's impact parameter in radii). F is a vec4:
+// rgb the source of everything but the sun, a the sun's transport to the ray's shading point
+// (mesh visibility × the medium's transmittance). The fragments multiply the sun's by its phase
+// function at their own ray (g = 0.99 peaks within a few pixels) and evaluate lamps themselves.
+// The odd cubic and even quartic terms follow a dense trail's sunward rim, which brightens sharply.
+// LIGHTING_EXACT shades each ray as particles.frag shades a pixel; otherwise light is taken at the
+// ray's shading point: phase, the mesh shadow map with seed 001's smooth weighting over the
+// particle's depth, and the slices' transmittance integrated over the layer.
 layout(local_size_x = 64) in;
 #define SEGMENT_SKIPS_LIGHT litPerFragment
 
@@ -22,26 +26,44 @@ layout(local_size_x = 64) in;
 #include "media/billboard.glsl"
 
 layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
-layout(std430, binding = 10) writeonly buffer ParticleLight { vec4 particleLight[]; };  // per rank: see PARTICLE_LIGHT_STRIDE
+layout(std430, binding = 10) writeonly buffer ParticleLight { vec4 particleLight[]; };  // per rank: particle_light_layout.glsl
 layout(location = 0) uniform uint uCount;
 
-const float SAMPLE_OFFSET = 0.5;
-const float OUTER_OFFSET = 0.9;
+const float INNER = 0.5, OUTER = 0.9;  // the two rings of samples, in billboard half sizes
 
-vec3 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank) {
+// The sun's transport to p: mesh visibility × the medium's transmittance over the layer.
+float sunTransport(vec3 origin, vec3 dir, Chord chord, float radius, float lo, float hi, float u, float tau, GpuParticle particle) {
+    int sun = uFragmentSun;
+    vec3 p = origin + dir * (chord.tClosest + u);
+    vec3 entry = origin + dir * (chord.tClosest + lo);
+    float vBar = shadingDepthFraction(tau) * tau;
+#ifdef LIGHTING_EXACT
+    float visibility = lights[sun].spot.z >= 0.0 ? segmentVisibility(sun, origin, dir, chord, radius, lo, hi, u) : 1.0;
+    return visibility * layerLightTransmittance(sun, entry, p, vBar, tau, particle);
+#else
+    float atP = mediumOpticalDepth(sun, p);
+    float transmittance = vBar > 1e-4 && tau > 1e-4 ? layerTransmittance(mediumOpticalDepth(sun, entry), atP, vBar, tau) : exp(-atP);
+    return mediumMeshVisibility(sun, p, radius / 3.0) * transmittance;
+#endif
+}
+
+// The source along one ray (rgb: all but the fragments' sun and lamps; a: the sun's transport).
+vec4 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank) {
     float radius = particle.positionRadius.w;
     Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, radius);
     float u0 = max(0.0, chord.tClosest - chord.halfChord) - chord.tClosest;  // the medium starts at the eye
     float u1 = chord.halfChord;
-    if (!(u1 > u0)) return particle.albedoSigma.rgb * frame.ambient.rgb + particle.emissionG.rgb;
+    if (!(u1 > u0)) return vec4(particle.albedoSigma.rgb * frame.ambient.rgb + particle.emissionG.rgb, 0.0);
     float tau = particle.albedoSigma.w * chordIntegral(chord, radius, u0, u1);
     float u = chordShadingPoint(chord, radius, u0, u1, tau);
+    float lo = max(u0, -chord.halfChord);
+    float sun = uFragmentSun >= 0 ? sunTransport(origin, dir, chord, radius, lo, u1, u, tau, particle) : 0.0;
 #ifdef LIGHTING_EXACT
     LayerOrder layer = LayerOrder(index, rank, 1e30, 1e30);
-    return segmentSource(origin, dir, chord, radius, max(u0, -chord.halfChord), u1, u, tau, particle, layer);
+    return vec4(segmentSource(origin, dir, chord, radius, lo, u1, u, tau, particle, layer), sun);
 #else
     vec3 p = origin + dir * (chord.tClosest + u);
-    vec3 entry = origin + dir * (chord.tClosest + max(u0, -chord.halfChord));
+    vec3 entry = origin + dir * (chord.tClosest + lo);
     float vBar = shadingDepthFraction(tau) * tau;
     vec3 scattered = frame.ambient.rgb;
     int i = 0;
@@ -52,8 +74,14 @@ vec3 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank)
         float transmittance = vBar > 1e-4 && tau > 1e-4 ? layerTransmittance(mediumOpticalDepth(i, entry), atP, vBar, tau) : exp(-atP);
         scattered += scatteredLight(i, p, dir, particle, -1.0, transmittance);
     } while (++i < frame.counts.x);
-    return particle.albedoSigma.rgb * scattered + particle.emissionG.rgb;
+    return vec4(particle.albedoSigma.rgb * scattered + particle.emissionG.rgb, sun);
 #endif
+}
+
+vec4 sourceThrough(vec3 point, GpuParticle particle, int index, int rank) {
+    vec3 origin, dir;
+    cameraRayThrough(point, origin, dir);
+    return raySource(origin, dir, particle, index, rank);
 }
 
 // How far in front of the closest approach along the centre ray the particle's light is seen (the
@@ -69,18 +97,30 @@ float centreShadingOffset(vec3 centre, GpuParticle particle) {
     return -chordShadingPoint(chord, radius, u0, chord.halfChord, tau);
 }
 
-vec3 sourceThrough(vec3 point, GpuParticle particle, int index, int rank) {
-    vec3 origin, dir;
-    cameraRayThrough(point, origin, dir);
-    return raySource(origin, dir, particle, index, rank);
-}
-
-// β² of the ray through an origin-relative point, the radial coordinate of the splats' fit.
+// β² of the ray through an origin-relative point.
 float impactSquared(vec3 point, vec3 centre, float radius) {
     vec3 origin, dir;
     cameraRayThrough(point, origin, dir);
     Chord c = chordOf(origin, dir, centre, radius);
     return c.b2 / (radius * radius);
+}
+
+// The fit's coefficients from the centre and two rings of four samples (`inner`/`outer`: +x, −x,
+// +y, −y): per axis an odd g·q + c·q³ through both rings' half differences, and an even
+// (r2 + r4·β²)·β² through the rings' means.
+void fitBillboard(vec4 centre, vec4 inner[4], vec4 outer[4], float innerB2, float outerB2, out vec4 fit[7]) {
+    fit[0] = centre;
+    const float a = INNER, c = OUTER, det = a * c * c * c - c * a * a * a;
+    for (int axis = 0; axis < 2; ++axis) {
+        vec4 oddA = 0.5 * (inner[2 * axis] - inner[2 * axis + 1]), oddC = 0.5 * (outer[2 * axis] - outer[2 * axis + 1]);
+        fit[1 + axis] = (oddA * c * c * c - oddC * a * a * a) / det;
+        fit[5 + axis] = (a * oddC - c * oddA) / det;
+    }
+    vec4 evenA = 0.25 * (inner[0] + inner[1] + inner[2] + inner[3]) - centre;
+    vec4 evenC = 0.25 * (outer[0] + outer[1] + outer[2] + outer[3]) - centre;
+    float even = innerB2 * outerB2 * (outerB2 - innerB2);
+    fit[3] = abs(even) > 1e-12 ? (evenA * outerB2 * outerB2 - evenC * innerB2 * innerB2) / even : vec4(0.0);
+    fit[4] = abs(even) > 1e-12 ? (evenC * innerB2 - evenA * outerB2) / even : vec4(0.0);
 }
 
 void main() {
@@ -91,52 +131,29 @@ void main() {
     vec3 centre = particle.positionRadius.xyz;
     float radius = particle.positionRadius.w;
     Billboard b = billboardOf(centre, radius);
-    vec3 j0 = sourceThrough(centre, particle, index, int(rank));
-    float shadingOffset = centreShadingOffset(centre, particle);
-    vec3 gx = vec3(0.0), gy = vec3(0.0), radial = vec3(0.0), quartic = vec3(0.0), cubicX = vec3(0.0), cubicY = vec3(0.0);
-    if (!b.coversScreen) {  // a quad that covers the screen has no billboard coordinates: J0 throughout
-        vec3 dx = b.right * SAMPLE_OFFSET, dy = b.up * SAMPLE_OFFSET;
-        vec3 px = sourceThrough(centre + dx, particle, index, int(rank)), mx = sourceThrough(centre - dx, particle, index, int(rank));
-        vec3 py = sourceThrough(centre + dy, particle, index, int(rank)), my = sourceThrough(centre - dy, particle, index, int(rank));
-        gx = (px - mx) / (2.0 * SAMPLE_OFFSET);
-        gy = (py - my) / (2.0 * SAMPLE_OFFSET);
-        // The even part: a dense particle's thin rim is lit through less of its own mass than its
-        // centre, so J grows towards the silhouette on every side, which no linear field follows.
-        float ring = impactSquared(centre + dx, centre, radius);
-        if (ring > 1e-6) radial = (0.25 * (px + mx + py + my) - j0) / ring;
-        // Outer ring: odd cubic terms per axis and a quartic radial term.
-        vec3 ex = b.right * OUTER_OFFSET, ey = b.up * OUTER_OFFSET;
-        vec3 opx = sourceThrough(centre + ex, particle, index, int(rank)), omx = sourceThrough(centre - ex, particle, index, int(rank));
-        vec3 opy = sourceThrough(centre + ey, particle, index, int(rank)), omy = sourceThrough(centre - ey, particle, index, int(rank));
-        float a = SAMPLE_OFFSET, c = OUTER_OFFSET;
-        // odd: f(q) = g q + k q³ through (a, oa) and (c, oc)
-        vec3 oa_x = 0.5 * (px - mx), oc_x = 0.5 * (opx - omx), oa_y = 0.5 * (py - my), oc_y = 0.5 * (opy - omy);
-        float det = a * c * c * c - c * a * a * a;
-        gx = (oa_x * c * c * c - oc_x * a * a * a) / det;
-        gy = (oa_y * c * c * c - oc_y * a * a * a) / det;
-        cubicX = (a * oc_x - c * oa_x) / det;
-        cubicY = (a * oc_y - c * oa_y) / det;
-        float ring2 = impactSquared(centre + ex, centre, radius);
-        float d2 = ring * ring2 * ring2 - ring2 * ring * ring;
-        if (abs(d2) > 1e-9) {
-            vec3 ea = 0.25 * (px + mx + py + my) - j0, ec = 0.25 * (opx + omx + opy + omy) - j0;
-            radial = (ea * ring2 * ring2 - ec * ring * ring) / d2;
-            quartic = (ec * ring - ea * ring2) / d2;
+    vec4 fit[7] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
+    vec4 j0 = sourceThrough(centre, particle, index, int(rank));
+    if (b.coversScreen) {  // a quad that covers the screen has no billboard coordinates: F0 throughout
+        fit[0] = j0;
+    } else {
+        vec3 axes[4] = vec3[](b.right, -b.right, b.up, -b.up);
+        vec4 inner[4], outer[4];
+        for (int k = 0; k < 4; ++k) {
+            inner[k] = sourceThrough(centre + axes[k] * INNER, particle, index, int(rank));
+            outer[k] = sourceThrough(centre + axes[k] * OUTER, particle, index, int(rank));
         }
+        fitBillboard(j0, inner, outer, impactSquared(centre + b.right * INNER, centre, radius),
+                     impactSquared(centre + b.right * OUTER, centre, radius), fit);
     }
     uint base = PARTICLE_LIGHT_STRIDE * rank;
-    particleLight[base] = vec4(j0, shadingOffset);
-    particleLight[base + 1u] = vec4(gx, 0.0);
-    particleLight[base + 2u] = vec4(gy, 0.0);
-    particleLight[base + 3u] = vec4(radial, 0.0);
-    particleLight[base + 4u] = vec4(quartic, 0.0);
-    particleLight[base + 5u] = vec4(cubicX, 0.0);
-    particleLight[base + 6u] = vec4(cubicY, 0.0);
+    for (int k = 0; k < 7; ++k) particleLight[base + uint(k)] = fit[k];
+    vec3 sunFactor = uFragmentSun >= 0 ? particle.albedoSigma.rgb * lights[uFragmentSun].radiance.rgb : vec3(0.0);
+    particleLight[base + 7u] = vec4(sunFactor, centreShadingOffset(centre, particle));
     // The lamps the fragments evaluate: what does not vary across the particle, taken at its centre.
     for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) {
         int i = uFragmentLamps[k];
         vec3 factor = vec3(0.0);
         if (i >= 0) factor = particle.albedoSigma.rgb * mediumMeshVisibility(i, centre, radius / 3.0);
-        particleLight[base + 7u + uint(k)] = vec4(factor, 0.0);
+        particleLight[base + 8u + uint(k)] = vec4(factor, 0.0);
     }
 }

@@ -1,17 +1,19 @@
 #version 450 core
-// Fast particles: per fragment only the kernel's optical depth along the pixel's ray, clipped at
-// the opaque surface (and at the eye with MEDIA_EYE_INSIDE), from seed 004's pre-integrated kernel
-// table; the source comes interpolated from the vertices. Output (α·J, α) blends premultiplied,
-// exactly as particles.frag's does.
+// Fast particles: per fragment the kernel's optical depth along the pixel's ray, clipped at the
+// opaque surface (and at the eye with MEDIA_EYE_INSIDE), from seed 004's pre-integrated kernel
+// table; the source from the lighting pass's fit (particle_lighting.comp), with the sun's phase
+// function and the lamps (MEDIA_FRAGMENT_LAMPS) at this pixel's own ray. Output (α·J, α) blends
+// premultiplied, exactly as particles.frag's does.
 #include "common/math.glsl"
 #include "common/frame.glsl"
-#include "media/kernel_table.glsl"
-#ifdef MEDIA_FRAGMENT_LAMPS
 #include "common/lights.glsl"
+#include "media/optics.glsl"
+#include "media/kernel_table.glsl"
+#include "media/particle_light_layout.glsl"
+#ifdef MEDIA_FRAGMENT_LAMPS
 #include "common/light_views.glsl"
 #include "common/transmittance.glsl"
-#include "media/optics.glsl"
-#include "media/particle_light_layout.glsl"
+#include "media/spot_cone.glsl"
 #endif
 
 layout(binding = 3) uniform sampler2D uSceneDepth;
@@ -19,41 +21,52 @@ layout(location = 1) uniform vec2 uFullResScale;
 
 flat in vec4 vCentreRadius;
 flat in float vSigma;
-in vec3 vSource;
-flat in vec3 vRadial;
-flat in vec3 vQuartic, vCubicX, vCubicY;
+in vec4 vSource;
 in vec2 vCorner;
+flat in vec4 vFit[4];
+flat in vec4 vSun;
+flat in vec2 vPhase;
 #ifdef MEDIA_FRAGMENT_LAMPS
 flat in vec3 vLampFactor[MAX_FRAGMENT_LAMPS];
-flat in vec3 vPhase;
 
-// Lamp `light`'s 1/d², shape and phase averaged over the kernel's mass along the visible segment
-// [lo, hi] of the ray (u from the closest point). Where the ray passes the lamp within two
-// deviations, 1/d² peaks far more sharply than the kernel varies: four Gauss–Legendre nodes in
-// φ, u = u_l + b·tan φ (u_l the lamp's closest approach, b its distance), as
-// local_light_segment.glsl does with more; elsewhere one point, the shading point p.
-float lampKernelMean(int light, vec3 origin, vec3 dir, float tc, float lo, float hi, float radius, float b2, float mass, vec3 p) {
+// Lamp `light`'s light scattered by the particle's visible segment [lo, hi] of the ray (u from the
+// closest point), per unit albedo and radiance, as the layer's source: σ∫ρ(u)e^−τ(u)·S(u)du / α
+// with τ(u) the particle's own optical depth in front of u and S = shape·phase·T/d² (T the
+// slices' transmittance from the lamp). Where the ray passes the lamp within two deviations, 1/d²
+// peaks far more sharply than the kernel varies: LAMP_NODES Gauss–Legendre nodes in φ over the
+// part inside a spot's cone, u = u_l + b·tan φ (u_l the lamp's closest approach, b its distance),
+// as local_light_segment.glsl does with more, each with its own T and e^−τ (inside a dense
+// particle both fall steeply away from the lamp). Elsewhere S varies slowly and is taken at the
+// shading point p.
+const int LAMP_NODES = 6;
+const float kLampNodes[6] = float[](-0.9324695142, -0.6612093865, -0.2386191861, 0.2386191861, 0.6612093865, 0.9324695142);
+const float kLampWeights[6] = float[](0.1713244924, 0.3607615730, 0.4679139346, 0.4679139346, 0.3607615730, 0.1713244924);
+
+float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi, float beta, float alpha, vec3 p) {
+    float radius = vCentreRadius.w;
+    vec2 lit = spotConeInterval(light, origin, dir, Chord(tc, 0.0, 0.0), lo, hi);
+    if (!(lit.y > lit.x)) return 0.0;
     vec3 lamp = lights[light].position.xyz;
     vec3 toLamp = lamp - origin;
     float uLamp = dot(toLamp, dir) - tc;
     float s = radius / 3.0;
     float b = max(length(toLamp - (uLamp + tc) * dir), 1e-4 * radius);
-    bool near = b < 2.0 * s && uLamp > lo - 2.0 * s && uLamp < hi + 2.0 * s && mass > 0.0;
-    const float nodes[4] = float[](-0.8611363116, -0.3399810436, 0.3399810436, 0.8611363116);
-    const float weights[4] = float[](0.3478548451, 0.6521451549, 0.6521451549, 0.3478548451);
-    float phi0 = atan((lo - uLamp) / b), phi1 = atan((hi - uLamp) / b);
+    bool near = b < 2.0 * s && uLamp > lo - 2.0 * s && uLamp < hi + 2.0 * s && alpha > 0.0;
+    float phi0 = atan((lit.x - uLamp) / b), phi1 = atan((lit.y - uLamp) / b);
     float mid = 0.5 * (phi0 + phi1), half_ = 0.5 * (phi1 - phi0);
     float k = KERNEL_FALLOFF / (radius * radius), sum = 0.0;
-    for (int j = 0; j < (near ? 4 : 0); ++j) {  // a loop, so llvmpipe skips it where no lane is near
-        float u = uLamp + b * tan(mid + half_ * nodes[j]);
+    float entry = kernelSegment(beta, lo / radius);
+    for (int j = 0; j < (near ? LAMP_NODES : 0); ++j) {  // a loop, so llvmpipe skips it where no lane is near
+        float u = uLamp + b * tan(mid + half_ * kLampNodes[j]);
         vec3 x = origin + dir * (tc + u);
         float phase = phaseValue(vPhase.x, vPhase.y, normalize(lamp - x), dir);
-        sum += weights[j] * exp(-k * (b2 + u * u)) * phase * lightShape(light, x);
+        float inFront = vSigma * radius * max(kernelSegment(beta, u / radius) - entry, 0.0);
+        sum += kLampWeights[j] * exp(-k * u * u - inFront - mediumOpticalDepth(light, x)) * phase * lightShape(light, x);
     }
-    if (near) return sum * half_ / (b * mass);
+    if (near) return vSigma * exp(-k * (radius * radius * beta * beta)) * sum * half_ / (b * alpha);
     vec3 toP = lamp - p;
     float d2 = max(dot(toP, toP), 1e-12);
-    return lightShape(light, p) * phaseValue(vPhase.x, vPhase.y, toP * inversesqrt(d2), dir) / d2;
+    return lightShape(light, p) * phaseValue(vPhase.x, vPhase.y, toP * inversesqrt(d2), dir) * exp(-mediumOpticalDepth(light, p)) / d2;
 }
 #endif
 
@@ -66,7 +79,7 @@ void main() {
     vec3 oc = vCentreRadius.xyz - origin;
     float tc = dot(oc, dir);
     vec3 perp = oc - tc * dir;
-    float invRadius = 1.0 / vCentreRadius.w;
+    float radius = vCentreRadius.w, invRadius = 1.0 / radius;
     float beta2 = dot(perp, perp) * invRadius * invRadius;
     float beta = sqrt(beta2);
     float depth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
@@ -75,19 +88,19 @@ void main() {
 #ifdef MEDIA_EYE_INSIDE
     segment -= kernelSegment(beta, -tc * invRadius);
 #endif
-    float alpha = oneMinusExpNeg(vSigma * vCentreRadius.w * max(segment, 0.0));
-    vec3 source = max(vSource + (vRadial + vQuartic * beta2) * beta2 + vCubicX * (vCorner.x * vCorner.x * vCorner.x) + vCubicY * (vCorner.y * vCorner.y * vCorner.y), vec3(0.0));
+    float alpha = oneMinusExpNeg(vSigma * radius * max(segment, 0.0));
+    vec4 fit = vSource + (vFit[0] + vFit[1] * beta2) * beta2 + vFit[2] * (vCorner.x * vCorner.x * vCorner.x) +
+               vFit[3] * (vCorner.y * vCorner.y * vCorner.y);
+    vec3 source = max(fit.rgb, vec3(0.0));
+    if (uFragmentSun >= 0)  // the sun's phase at this pixel's own ray: g = 0.99 peaks within a few pixels
+        source += vSun.rgb * (phaseValue(vPhase.x, vPhase.y, -lights[uFragmentSun].direction.xyz, dir) * max(fit.a, 0.0));
 #ifdef MEDIA_FRAGMENT_LAMPS
-    float radius = vCentreRadius.w;
     float h = sqrt(max(radius * radius - dot(perp, perp), 0.0));
     float lo = max(-h, -tc), hi = min(h, tSurface - tc);
-    float mass = radius * max(segment, 0.0);  // ∫ρ du over [lo, hi]
-    vec3 p = origin + dir * (tc - vPhase.z);
+    vec3 p = origin + dir * (tc - vSun.a);
     for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) {
         int light = uFragmentLamps[k];
-        if (light < 0) continue;
-        float mean = lampKernelMean(light, origin, dir, tc, lo, hi, radius, dot(perp, perp), mass, p);
-        source += vLampFactor[k] * lights[light].radiance.rgb * (mean * exp(-mediumOpticalDepth(light, p)));
+        if (light >= 0) source += vLampFactor[k] * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, beta, alpha, p);
     }
 #endif
     outColor = vec4(source * alpha, alpha);

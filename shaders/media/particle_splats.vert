@@ -1,6 +1,7 @@
 #version 450 core
 // Fast particles (media/particle_splat_pass.cpp): sorted billboards, back to front, carrying the
-// source their lighting pass computed as a linear field over the quad.
+// fit of their source the lighting pass computed (particle_lighting.comp): its linear part
+// interpolated across the quad, the rest for the fragments.
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "media/particle_data.glsl"
@@ -12,13 +13,13 @@ layout(std430, binding = 10) readonly buffer ParticleLight { vec4 particleLight[
 
 flat out vec4 vCentreRadius;  // origin-relative centre, radius
 flat out float vSigma;
-out vec3 vSource;             // J's linear part (an affine function of the billboard's plane: exact)
-flat out vec3 vRadial;        // J's radial part per β²
-flat out vec3 vQuartic, vCubicX, vCubicY;
-out vec2 vCorner;
+out vec4 vSource;             // F0 + gx·x + gy·y (an affine function of the billboard's plane: exact)
+out vec2 vCorner;             // x, y
+flat out vec4 vFit[4];        // r2, r4, cx, cy
+flat out vec4 vSun;           // rgb: albedo × the sun's radiance, a: the centre ray's shading offset
+flat out vec2 vPhase;         // phase function (0 HG, 1 Rayleigh), g
 #ifdef MEDIA_FRAGMENT_LAMPS
 flat out vec3 vLampFactor[MAX_FRAGMENT_LAMPS];
-flat out vec3 vPhase;         // x: phase function (0 HG, 1 Rayleigh), y: g, z: shading offset along the ray
 #endif
 
 const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
@@ -26,27 +27,25 @@ const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.
 void main() {
     int rank = gl_InstanceID;
     int index = int(drawOrder[rank]);
-    vec4 pr = particles[index].positionRadius;
+    GpuParticle particle = particles[index];
+    vec4 pr = particle.positionRadius;
     vCentreRadius = pr;
-    vSigma = particles[index].albedoSigma.w;
-    vec2 corner = kCorners[gl_VertexID];
+    vSigma = particle.albedoSigma.w;
+    vPhase = vec2(particle.extra.x, particle.emissionG.w);
     uint base = PARTICLE_LIGHT_STRIDE * uint(rank);
-    vec3 j0 = particleLight[base].rgb;
-    vRadial = particleLight[base + 3u].rgb;
-    vQuartic = particleLight[base + 4u].rgb;
-    vCubicX = particleLight[base + 5u].rgb;
-    vCubicY = particleLight[base + 6u].rgb;
-    vCorner = corner;
+    for (int k = 0; k < 4; ++k) vFit[k] = particleLight[base + 3u + uint(k)];
+    vSun = particleLight[base + 7u];
 #ifdef MEDIA_FRAGMENT_LAMPS
-    for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) vLampFactor[k] = particleLight[base + 7u + uint(k)].rgb;
-    vPhase = vec3(particles[index].extra.x, particles[index].emissionG.w, particleLight[base].w);
+    for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) vLampFactor[k] = particleLight[base + 8u + uint(k)].rgb;
 #endif
+    vec2 corner = kCorners[gl_VertexID];
+    vCorner = corner;
     Billboard b = billboardOf(pr.xyz, pr.w);
     if (b.coversScreen) {
-        vSource = j0;
+        vSource = particleLight[base];
         gl_Position = vec4(corner, 0.5, 1.0);
         return;
     }
-    vSource = j0 + particleLight[base + 1u].rgb * corner.x + particleLight[base + 2u].rgb * corner.y;
+    vSource = particleLight[base] + particleLight[base + 1u] * corner.x + particleLight[base + 2u] * corner.y;
     gl_Position = frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);
 }

@@ -54,9 +54,23 @@ double sparsity(const assets::RgbImage& image) {
     return std::sqrt(energy / (3.0 * n)) / (luminance / n);
 }
 
-double boundedError(const CaseRun& run, media::MediaMode mode) {
-    const ModeRun& m = run.mode(mode);
+const char* tierName(Tier tier) {
+    switch (tier) {
+        case Tier::Particles: return "particles";
+        case Tier::Blocks: return "blocks";
+        case Tier::Balanced: return "balanced";
+        case Tier::Fast: return "fast";
+    }
+    return "unknown";
+}
+
+double boundedError(const CaseRun& run, Tier tier) {
+    const ModeRun& m = run.tier(tier);
     return run.referenceSparsity >= kSparseImageRatio ? m.rmsRelativeError : m.error.relRmse;
+}
+
+double boundedError(const CaseRun& run, media::MediaMode mode) {
+    return boundedError(run, mode == media::MediaMode::Blocks ? Tier::Blocks : Tier::Particles);
 }
 
 assets::RgbImage renderReference(sandbox::Session& session, const std::string& camera, int width, int height,
@@ -70,9 +84,10 @@ assets::RgbImage renderReference(sandbox::Session& session, const std::string& c
     return reference::renderReference(scene->inputs, settings);
 }
 
-assets::RgbImage renderMode(sandbox::Session& session, media::MediaMode mode, int width, int height,
-                            const std::string& camera) {
-    session.app().resource<Settings>().set("mode", media::mediaModeName(mode), "stability test");
+assets::RgbImage renderTier(sandbox::Session& session, Tier tier, int width, int height, const std::string& camera) {
+    auto& settings = session.app().resource<Settings>();
+    settings.set("mode", tier == Tier::Blocks ? "blocks" : "particles", "stability test");
+    settings.set("quality", tier == Tier::Balanced ? "balanced" : tier == Tier::Fast ? "fast" : "exact", "stability test");
     return session.renderRealtime(width, height, camera);
 }
 
@@ -81,13 +96,13 @@ media::MediaFrameStats mediaStats(sandbox::Session& session) {
     return state != nullptr && state->renderer ? state->renderer->stats() : media::MediaFrameStats{};
 }
 
-ModeRun runMode(gpu::Context& context, sandbox::Session& session, const HardCase& c, media::MediaMode mode,
-                const assets::RgbImage& referenceImage) {
+ModeRun runTier(gpu::Context& context, sandbox::Session& session, const HardCase& c, Tier tier, const assets::RgbImage& referenceImage) {
     ModeRun run;
-    run.mode = mode;
+    run.tier = tier;
+    run.mode = tier == Tier::Blocks ? media::MediaMode::Blocks : media::MediaMode::Particles;
     (void)context.takeGlErrors();
-    run.image = renderMode(session, mode, c.width, c.height, c.camera);
-    const assets::RgbImage second = renderMode(session, mode, c.width, c.height, c.camera);
+    run.image = renderTier(session, tier, c.width, c.height, c.camera);
+    const assets::RgbImage second = renderTier(session, tier, c.width, c.height, c.camera);
     run.glErrors = context.takeGlErrors();
     run.stats = mediaStats(session);
     run.nonfinite = countNonfinite(run.image);
@@ -122,22 +137,28 @@ const CaseRun& runCase(gpu::Context& context, const HardCase& c) {
     run->referenceHalfNonfinite = countNonfinite(half);
     run->referenceSelfChange = relativeRmsChange(half, run->reference);
     run->referenceSparsity = sparsity(run->reference);
-    run->particles = runMode(context, session, c, media::MediaMode::Particles, run->reference);
-    run->blocks = runMode(context, session, c, media::MediaMode::Blocks, run->reference);
+    run->particles = runTier(context, session, c, Tier::Particles, run->reference);
+    run->blocks = runTier(context, session, c, Tier::Blocks, run->reference);
+    run->balanced = runTier(context, session, c, Tier::Balanced, run->reference);
+    run->fast = runTier(context, session, c, Tier::Fast, run->reference);
     run->particleCount = run->particles.stats.particles;
 
-    std::printf("[stability] %-34s %7zu particles  rel_rmse particles %.4g  blocks %.4g  (reference self-change %.2g; "
-                "repeat %.2g / %.2g)\n",
+    std::printf("[stability] %-34s %7zu particles  rel_rmse particles %.4g  blocks %.4g  balanced %.4g  fast %.4g  "
+                "(reference self-change %.2g; repeat %.2g / %.2g)\n",
                 c.name.c_str(), run->particleCount, run->particles.error.relRmse, run->blocks.error.relRmse,
-                run->referenceSelfChange, run->particles.repeatChange, run->blocks.repeatChange);
+                run->balanced.error.relRmse, run->fast.error.relRmse, run->referenceSelfChange, run->particles.repeatChange,
+                run->blocks.repeatChange);
     if (run->referenceSparsity >= kSparseImageRatio)
-        std::printf("[stability] %-34s sparse (RMS %.3g x mean): bound on RMS-relative error, particles %.4g  blocks %.4g\n",
-                    c.name.c_str(), run->referenceSparsity, run->particles.rmsRelativeError, run->blocks.rmsRelativeError);
+        std::printf("[stability] %-34s sparse (RMS %.3g x mean): bound on RMS-relative error, particles %.4g  blocks %.4g  "
+                    "balanced %.4g  fast %.4g\n",
+                    c.name.c_str(), run->referenceSparsity, run->particles.rmsRelativeError, run->blocks.rmsRelativeError,
+                    run->balanced.rmsRelativeError, run->fast.rmsRelativeError);
     ::testing::Test::RecordProperty("rel_rmse_particles", std::to_string(run->particles.error.relRmse));
     ::testing::Test::RecordProperty("rel_rmse_blocks", std::to_string(run->blocks.error.relRmse));
+    ::testing::Test::RecordProperty("rel_rmse_balanced", std::to_string(run->balanced.error.relRmse));
+    ::testing::Test::RecordProperty("rel_rmse_fast", std::to_string(run->fast.error.relRmse));
     dump(c, "reference", run->reference);
-    dump(c, "particles", run->particles.image);
-    dump(c, "blocks", run->blocks.image);
+    for (const Tier tier : kAllTiers) dump(c, tierName(tier), run->tier(tier).image);
     return *memo.emplace(c.name, std::move(run)).first->second;
 }
 
@@ -162,8 +183,9 @@ void expectFiniteAndClean(const HardCase& c, const CaseRun& run) {
     EXPECT_EQ(run.referenceNonfinite, 0u) << "reference has non-finite pixels";
     EXPECT_EQ(run.referenceHalfNonfinite, 0u) << "reference at half tolerance has non-finite pixels";
     EXPECT_LT(run.referenceSelfChange, kReferenceSelfChangeBound) << "the reference is not converged";
-    for (const ModeRun* m : {&run.particles, &run.blocks}) {
-        const char* mode = media::mediaModeName(m->mode);
+    for (const Tier tier : kAllTiers) {
+        const ModeRun* m = &run.tier(tier);
+        const char* mode = tierName(tier);
         EXPECT_EQ(m->nonfinite, 0u) << mode << ": non-finite pixels";
         EXPECT_EQ(m->repeatNonfinite, 0u) << mode << ": non-finite pixels in the second frame";
         EXPECT_EQ(m->glErrors.count, 0u) << mode << ": GL error: " << m->glErrors.first;
@@ -173,11 +195,15 @@ void expectFiniteAndClean(const HardCase& c, const CaseRun& run) {
 }
 
 void expectWithinBound(const HardCase& c, const CaseRun& run, media::MediaMode mode, double bound) {
-    const ModeRun& m = run.mode(mode);
+    expectWithinBound(c, run, mode == media::MediaMode::Blocks ? Tier::Blocks : Tier::Particles, bound);
+}
+
+void expectWithinBound(const HardCase& c, const CaseRun& run, Tier tier, double bound) {
+    const ModeRun& m = run.tier(tier);
     const bool sparse = run.referenceSparsity >= kSparseImageRatio;
-    EXPECT_LE(boundedError(run, mode), bound)
-        << c.name << ", " << media::mediaModeName(mode) << ": " << (sparse ? "RMS-relative error" : "rel-RMSE")
-        << " against the reference " << boundedError(run, mode) << " (rel-RMSE " << m.error.relRmse << ", RMS-relative "
+    EXPECT_LE(boundedError(run, tier), bound)
+        << c.name << ", " << tierName(tier) << ": " << (sparse ? "RMS-relative error" : "rel-RMSE")
+        << " against the reference " << boundedError(run, tier) << " (rel-RMSE " << m.error.relRmse << ", RMS-relative "
         << m.rmsRelativeError << ", reference RMS / mean " << run.referenceSparsity << ", p99 |diff| " << m.error.p99Abs << ")";
     EXPECT_EQ(m.error.comparedPixels, run.reference.pixelCount()) << c.name << ": some pixels were not comparable";
 }

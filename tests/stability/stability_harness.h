@@ -56,7 +56,14 @@ struct HardCase {
     std::vector<std::string> settings;  // KEY=VALUE for both modes (e.g. "blocks=26")
 };
 
+// What a real-time run renders: the exact tier in each mode, and `particles` in the balanced and
+// fast tiers (the quality presets).
+enum class Tier { Particles, Blocks, Balanced, Fast };
+const char* tierName(Tier tier);
+inline constexpr Tier kAllTiers[] = {Tier::Particles, Tier::Blocks, Tier::Balanced, Tier::Fast};
+
 struct ModeRun {
+    Tier tier = Tier::Particles;
     media::MediaMode mode = media::MediaMode::Particles;
     assets::RgbImage image;              // the first frame
     media::reference::ImageMetrics error;  // first frame against the reference
@@ -75,8 +82,11 @@ struct CaseRun {
     double referenceSparsity = 0.0;      // RMS(reference) / its mean luminance (see kSparseImageRatio)
     std::size_t referenceHalfNonfinite = 0;
     std::size_t particleCount = 0;       // what both renderers drew
-    ModeRun particles, blocks;
+    ModeRun particles, blocks, balanced, fast;
     const ModeRun& mode(media::MediaMode m) const { return m == media::MediaMode::Blocks ? blocks : particles; }
+    const ModeRun& tier(Tier t) const {
+        return t == Tier::Blocks ? blocks : t == Tier::Balanced ? balanced : t == Tier::Fast ? fast : particles;
+    }
 };
 
 // tests/data/stability_scenes (compiled in by nimbus_test's NIMBUS_TEST_DATA_DIR).
@@ -97,18 +107,27 @@ double sparsity(const assets::RgbImage& image);
 // 160×90: 120·e, so a 0.2% error fails 15%), and RMS(error) / RMS(reference) reads it as e. The
 // harness measures the reference's own convergence that way for the same reason.
 double boundedError(const CaseRun& run, media::MediaMode mode);
+double boundedError(const CaseRun& run, Tier tier);
 
 // The reference of a session's current state at width×height through `camera`.
 assets::RgbImage renderReference(sandbox::Session& session, const std::string& camera, int width, int height,
                                  double tolerance = kReferenceTolerance);
 
-// One real-time frame in `mode` (sets the session's "mode" setting).
-assets::RgbImage renderMode(sandbox::Session& session, media::MediaMode mode, int width, int height,
-                            const std::string& camera);
+// One real-time frame in `tier` (sets the session's "mode" and "quality" settings).
+assets::RgbImage renderTier(sandbox::Session& session, Tier tier, int width, int height, const std::string& camera);
 
-// Both modes of the session's current state (two frames each) against `reference`.
-ModeRun runMode(gpu::Context& context, sandbox::Session& session, const HardCase& c, media::MediaMode mode,
-                const assets::RgbImage& reference);
+inline Tier exactTier(media::MediaMode mode) { return mode == media::MediaMode::Blocks ? Tier::Blocks : Tier::Particles; }
+// One frame of the exact tier in `mode`.
+inline assets::RgbImage renderMode(sandbox::Session& session, media::MediaMode mode, int width, int height, const std::string& camera) {
+    return renderTier(session, exactTier(mode), width, height, camera);
+}
+
+// One tier of the session's current state (two frames) against `reference`.
+ModeRun runTier(gpu::Context& context, sandbox::Session& session, const HardCase& c, Tier tier, const assets::RgbImage& reference);
+inline ModeRun runMode(gpu::Context& context, sandbox::Session& session, const HardCase& c, media::MediaMode mode,
+                       const assets::RgbImage& reference) {
+    return runTier(context, session, c, exactTier(mode), reference);
+}
 
 // Everything for one case (memoised by name). Needs the suite's context current.
 const CaseRun& runCase(gpu::Context& context, const HardCase& c);
@@ -141,12 +160,13 @@ private:
 
 // The assertions every hard case makes, in two groups so that a case whose error is beyond its
 // bound still checks that it stays finite (the bound test is the one DISABLED_ until fixed).
-//   expectFiniteAndClean: no non-finite pixel in the reference (both tolerances) or in either
-//     mode's two frames; no GL error in either mode; halving the reference's tolerance changes it by
-//     < 1e-3 (relativeRmsChange); a second frame of the same state is identical; both modes drew
-//     the same particles.
-//   expectWithinBound: rel-RMSE of `mode` against the reference <= bound.
+//   expectFiniteAndClean: no non-finite pixel in the reference (both tolerances) or in any tier's
+//     two frames; no GL error in any tier; halving the reference's tolerance changes it by < 1e-3
+//     (relativeRmsChange); a second frame of the same state is identical; every tier drew the same
+//     particles.
+//   expectWithinBound: rel-RMSE of `mode` (the exact tier) or `tier` against the reference <= bound.
 void expectFiniteAndClean(const HardCase& c, const CaseRun& run);
 void expectWithinBound(const HardCase& c, const CaseRun& run, media::MediaMode mode, double bound);
+void expectWithinBound(const HardCase& c, const CaseRun& run, Tier tier, double bound);
 
 }  // namespace nimbus::stability

@@ -31,8 +31,13 @@ namespace {
 
 using media::MediaMode;
 
-// "<variant stem>/<mode>" → why it is beyond 15% today (the report's finding).
-const std::map<std::string, std::string> kBeyondBound = {};
+// "<variant stem>/<tier>" → why it is beyond its bound today (the report's finding).
+const std::map<std::string, std::string> kBeyondBound = {
+    {"variant_05_normal_tau30_spot_inside_gp0_50_n1_far_inside_through/fast",
+     "a spot light inside one particle of optical depth 30: fast takes a lamp's light at one shading point per ray "
+     "beyond two deviations of the lamp, where inside so dense a particle it falls by e^-30 across the segment "
+     "(balanced shades such frames per fragment: exact_around_dense_lamps)"},
+};
 
 std::vector<std::string> variantScenes() {
     const char* override = std::getenv("NIMBUS_STABILITY_SCENES");
@@ -60,16 +65,22 @@ HardCase variantCase(const std::string& path) { return {.name = stem(path), .sce
 
 struct BoundCase {
     std::string scene;
-    MediaMode mode = MediaMode::Particles;
+    Tier tier = Tier::Particles;
 };
 
-// Every (scene, mode), split by whether kBeyondBound lists it.
+// The bound per tier: the 15% for the exact tier in both modes and for balanced. The fast
+// tier lights each particle once, from five rays through it and the slices at two texels per
+// particle radius (quality preset `fast`); 20%: the largest fast error measured on these variants
+// is stated in docs/PERFORMANCE.md beside the tier's other bounds.
+double tierBound(Tier tier) { return tier == Tier::Fast ? 0.20 : kDefaultErrorBound; }
+
+// Every (scene, tier), split by whether kBeyondBound lists it.
 std::vector<BoundCase> boundCases(bool beyond) {
     std::vector<BoundCase> cases;
     for (const std::string& scene : variantScenes()) {
-        for (MediaMode mode : {MediaMode::Particles, MediaMode::Blocks}) {
-            const bool listed = kBeyondBound.count(stem(scene) + "/" + media::mediaModeName(mode)) != 0;
-            if (listed == beyond) cases.push_back({scene, mode});
+        for (const Tier tier : kAllTiers) {
+            const bool listed = kBeyondBound.count(stem(scene) + "/" + tierName(tier)) != 0;
+            if (listed == beyond) cases.push_back({scene, tier});
         }
     }
     return cases;
@@ -90,13 +101,13 @@ class UnseenVariantBoundTest : public StabilityTest, public ::testing::WithParam
 
 TEST_P(UnseenVariantBoundTest, WithinBound) {
     const HardCase c = variantCase(GetParam().scene);
-    const auto reason = kBeyondBound.find(stem(GetParam().scene) + "/" + media::mediaModeName(GetParam().mode));
+    const auto reason = kBeyondBound.find(stem(GetParam().scene) + "/" + tierName(GetParam().tier));
     if (reason != kBeyondBound.end()) std::printf("[stability] known beyond the bound: %s\n", reason->second.c_str());
-    expectWithinBound(c, runCase(context(), c), GetParam().mode, kDefaultErrorBound);
+    expectWithinBound(c, runCase(context(), c), GetParam().tier, tierBound(GetParam().tier));
 }
 
 std::string boundName(const ::testing::TestParamInfo<BoundCase>& param) {
-    return identifier(stem(param.param.scene) + "_" + media::mediaModeName(param.param.mode));
+    return identifier(stem(param.param.scene) + "_" + tierName(param.param.tier));
 }
 
 INSTANTIATE_TEST_SUITE_P(Generated, UnseenVariantBoundTest, ::testing::ValuesIn(boundCases(false)), boundName);

@@ -110,9 +110,13 @@ private:
 inline constexpr GLuint kParticleLightBinding = 10;
 inline constexpr int kMaxFragmentLamps = 2;  // shaders/media/particle_light_layout.glsl MAX_FRAGMENT_LAMPS
 
-// The point and spot lights whose 1/d² the fast splats evaluate per fragment (−1: none): near a
-// lamp it peaks across a particle far more sharply than a linear field follows.
-using FragmentLamps = std::array<GLint, kMaxFragmentLamps>;
+// The lights the fast splats evaluate per fragment (−1: none): the first directional light's phase
+// function (g = 0.99 peaks within a few pixels), and point and spot lights' 1/d² (near a lamp it
+// peaks across a particle far more sharply than any fit follows).
+struct FragmentLamps {
+    GLint sun = -1;
+    std::array<GLint, kMaxFragmentLamps> lamps{};
+};
 FragmentLamps fragmentLamps(const std::vector<assets::ResolvedLight>& lights);
 
 // Per-particle lighting (the fast tiers): each particle's source as a linear field over its

@@ -76,6 +76,20 @@ double splatCoverage(const ParticleSet& particles, const render::View& view) {
     return covered / pixels;
 }
 
+bool lampInsideDenseParticle(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights, const glm::dvec3&) {
+    // Peak column through a particle's centre: σ ∫ e^{−k u²} du over the chord ≈ 0.8355·σR.
+    constexpr double kColumnPerSigmaRadius = 0.8355;
+    for (const auto& light : lights) {
+        if (light.params.type == assets::LightType::Directional) continue;
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            const double r = particles.radius[i];
+            if (kColumnPerSigmaRadius * particles.sigma[i] * r > kDenseLampColumn && glm::length(light.position - particles.position[i]) < r)
+                return true;
+        }
+    }
+    return false;
+}
+
 bool eyeInsideMedium(const ParticleSet& particles, const render::View& view) {
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const glm::dvec3 d = particles.position[i] - view.origin;
@@ -285,13 +299,15 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
     } else if (settings_.mode == MediaMode::Billboards) {
         if (!billboardPass_) billboardPass_ = std::make_unique<BillboardPass>();
         media = billboardPass_->add(graph, context, *buffer_, target);
-    } else if (settings_.lighting != ParticleLighting::Fragment) {
+    } else if (settings_.lighting != ParticleLighting::Fragment &&
+               !(settings_.exactAroundDenseLamps && lampInsideDenseParticle(*particles_, context.input.lights, v.origin))) {
         if (!lightingPass_) lightingPass_ = std::make_unique<ParticleLightingPass>();
         if (!splatPass_) splatPass_ = std::make_unique<ParticleSplatPass>();
         const FragmentLamps lamps = fragmentLamps(context.input.lights);
         lightingPass_->add(graph, context, *buffer_, particles_->size(), settings_.lighting == ParticleLighting::ParticleExact, lamps);
         media = splatPass_->add(graph, context, *buffer_, *lightingPass_, eyeInsideMedium(*particles_, v), lamps, target);
     } else {
+        stats_.exactLighting = true;
         if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
         media = particlePass_->add(graph, context, *buffer_, {settings_.softParticles, settings_.layerLight}, target);
     }

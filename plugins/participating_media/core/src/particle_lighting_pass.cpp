@@ -13,8 +13,9 @@ namespace nimbus::media {
 namespace {
 constexpr GLuint kShadowDepthUnit = 4;
 constexpr GLuint kLocalSize = 64;
+constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
-constexpr std::size_t kBytesPerParticle = (7 + kMaxFragmentLamps) * sizeof(glm::vec4);
+constexpr std::size_t kBytesPerParticle = (8 + kMaxFragmentLamps) * sizeof(glm::vec4);
 }  // namespace
 
 ParticleLightingPass::ParticleLightingPass()
@@ -51,19 +52,25 @@ void ParticleLightingPass::add(render::FrameGraph& graph, render::FrameContext& 
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
             glProgramUniform1ui(program.id(), 0, count);
-            glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.data());
+            glProgramUniform1i(program.id(), kFragmentSunLocation, lamps.sun);
+            glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
             glDispatchCompute((count + kLocalSize - 1) / kLocalSize, 1, 1);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         });
 }
 
 FragmentLamps fragmentLamps(const std::vector<assets::ResolvedLight>& lights) {
-    FragmentLamps lamps;
-    lamps.fill(-1);
+    FragmentLamps out;
+    out.lamps.fill(-1);
     std::size_t k = 0;
-    for (std::size_t i = 0; i < lights.size() && k < lamps.size(); ++i)
-        if (lights[i].params.type != assets::LightType::Directional) lamps[k++] = static_cast<GLint>(i);
-    return lamps;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].params.type == assets::LightType::Directional) {
+            if (out.sun < 0) out.sun = static_cast<GLint>(i);
+        } else if (k < out.lamps.size()) {
+            out.lamps[k++] = static_cast<GLint>(i);
+        }
+    }
+    return out;
 }
 
 void ParticleLightingPass::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleLightBinding, light_.id()); }

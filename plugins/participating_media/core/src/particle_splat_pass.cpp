@@ -11,6 +11,7 @@ namespace nimbus::media {
 
 namespace {
 constexpr GLuint kKernelTableUnit = 6;
+constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
 }
 
@@ -30,7 +31,7 @@ const gpu::Program& ParticleSplatPass::program(bool eyeInside, bool lamps) {
 render::ResourceHandle ParticleSplatPass::add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
                                               const ParticleLightingPass& lighting, bool eyeInside, const FragmentLamps& lamps,
                                               const MediaTarget& target) {
-    const gpu::Program& program = this->program(eyeInside, lamps[0] >= 0);
+    const gpu::Program& program = this->program(eyeInside, lamps.lamps[0] >= 0);
     struct Data {
         render::ResourceHandle media, depth, slices;
     };
@@ -40,7 +41,7 @@ render::ResourceHandle ParticleSplatPass::add(render::FrameGraph& graph, render:
         [&](render::PassBuilder& builder, Data& d) {
             d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
             d.depth = builder.read(context.sceneDepth);
-            if (lamps[0] >= 0 && context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
+            if (lamps.lamps[0] >= 0 && context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
         },
         [this, &program, &context, &buffer, &lighting, lamps, w, h, scale = target.fullResScale](const render::PassResources& resources,
                                                                                           const Data& d) {
@@ -60,7 +61,8 @@ render::ResourceHandle ParticleSplatPass::add(render::FrameGraph& graph, render:
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
             glProgramUniform2f(program.id(), 1, scale.x, scale.y);
-            if (lamps[0] >= 0) glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.data());
+            glProgramUniform1i(program.id(), kFragmentSunLocation, lamps.sun);
+            if (lamps.lamps[0] >= 0) glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
             glDisable(GL_DEPTH_TEST);
             glDisable(GL_CULL_FACE);
             glEnable(GL_BLEND);

@@ -152,6 +152,7 @@ MediaRenderSettings readMediaSettings(const Settings* settings) {
     }
     if (settings->text("slice_deposit") == "auto") s.sliceDeposit = SliceDeposit::Auto;
     else if (auto v = settings->boolean("slice_deposit")) s.sliceDeposit = *v ? SliceDeposit::On : SliceDeposit::Off;
+    if (auto v = settings->boolean("exact_around_dense_lamps")) s.exactAroundDenseLamps = *v;
     if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
     if (auto v = settings->boolean("layer_light")) s.layerLight = *v;
     if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
@@ -208,6 +209,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("lighting", "particles mode: where light is evaluated: fragment (default, exact), particle (per particle, linear across it) or particle_exact");
     settings.declare("slice_detail", "with slice_resolution=auto: slice texels across the median particle's radius, 0.25..16 (default 3)");
     settings.declare("slice_deposit", "light slices drawn as one float per particle and slab, then summed: on, off (default) or auto (on unless a point or spot light's views are among them)");
+    settings.declare("exact_around_dense_lamps", "with lighting=particle or particle_exact: shade per fragment where a lamp lies inside an optically thick particle (column > 4): on or off (default)");
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
     settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)), more in optically thick media or around a lamp inside them)");

@@ -54,6 +54,10 @@ struct MediaRenderSettings {
     // pass within float rounding); auto: unless a lamp's views are among them.
     SliceDeposit sliceDeposit = SliceDeposit::Off;
     ParticleLighting lighting = ParticleLighting::Fragment;  // particles mode
+    // With per-particle lighting: shade a frame per fragment after all where a lamp lies inside a
+    // particle denser than kDenseLampColumn (inside it, the lamp's light falls across the particle
+    // faster than the fits or the fragments' one-point estimate follow).
+    bool exactAroundDenseLamps = false;
     bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
     bool layerLight = true;    // particles mode: integrate the light's transmittance over each particle's layer
                                // (off: take it at one point: up to 26% less frame time in docs/PERFORMANCE.md,
@@ -79,6 +83,7 @@ struct MediaFrameStats {
                                          // (block_shading=seam: near the seam only)
     glm::ivec2 impostorAtlas{0};  // blocks mode: the camera's impostor atlas size
     float mediaScale = 1.0f;      // the media target's resolution relative to the frame, this frame
+    bool exactLighting = false;   // particles mode: shaded per fragment this frame (exactAroundDenseLamps included)
 };
 
 class LightSlicePass;
@@ -150,6 +155,11 @@ private:
 // image area), each clipped to the screen: what the splat floor pays for, estimated on the CPU.
 double splatCoverage(const ParticleSet& particles, const render::View& view);
 inline constexpr double kHalfScaleCoverage = 2.5;
+
+// Whether a point or spot light lies inside a particle whose column through its centre exceeds
+// kDenseLampColumn (MediaRenderSettings::exactAroundDenseLamps).
+inline constexpr double kDenseLampColumn = 4.0;
+bool lampInsideDenseParticle(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights, const glm::dvec3& origin);
 
 // Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
 bool eyeInsideMedium(const ParticleSet& particles, const render::View& view);

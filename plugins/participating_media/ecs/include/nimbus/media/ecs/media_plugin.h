@@ -36,8 +36,32 @@ struct QualityPreset {
 inline const QualityPreset kQualityPresets[] = {
     {"fast", {{"lighting", "particle"}, {"slice_deposit", "auto"}, {"slices", "16"}, {"slice_resolution", "auto"},
               {"slice_detail", "2"}, {"media_scale", "auto"}, {"pcf_radius", "0"}, {"shadow_map_size", "1024"}}},
-    {"balanced", {{"lighting", "particle_exact"}, {"slice_deposit", "auto"}, {"slice_resolution", "auto"}, {"slice_detail", "4"}}},
+    {"balanced", {{"lighting", "particle_exact"}, {"exact_around_dense_lamps", "on"}, {"slice_deposit", "auto"},
+                  {"slice_resolution", "auto"}, {"slice_detail", "4"}}},
     {"exact", {}},
+};
+
+// The quality ladder a frame budget walks (FrameBudget in nimbus/base/frame_budget.h), from the
+// lowest error to the fastest, as `sandbox bench` orders them by the error it measures (its rows
+// carry these names): the tiers, with the media pass's resolution between them.
+struct QualityRung {
+    const char* name;
+    std::vector<std::pair<std::string, std::string>> settings;
+};
+// Resolution steps of about 1.4× in pixels, so some rung lands within 1.25× of any budget the
+// ladder spans.
+inline const QualityRung kQualityLadder[] = {
+    {"exact", {{"quality", "exact"}}},
+    {"balanced", {{"quality", "balanced"}, {"media_scale", "1"}}},
+    {"balanced media_scale=0.7", {{"quality", "balanced"}, {"media_scale", "0.7"}}},
+    {"balanced media_scale=0.5", {{"quality", "balanced"}, {"media_scale", "0.5"}}},
+    {"fast media_scale=1", {{"quality", "fast"}, {"media_scale", "1"}}},
+    {"fast media_scale=0.85", {{"quality", "fast"}, {"media_scale", "0.85"}}},
+    {"fast media_scale=0.7", {{"quality", "fast"}, {"media_scale", "0.7"}}},
+    {"fast media_scale=0.6", {{"quality", "fast"}, {"media_scale", "0.6"}}},
+    {"fast media_scale=0.5", {{"quality", "fast"}, {"media_scale", "0.5"}}},
+    {"fast media_scale=0.35", {{"quality", "fast"}, {"media_scale", "0.35"}}},
+    {"fast media_scale=0.25", {{"quality", "fast"}, {"media_scale", "0.25"}}},
 };
 inline constexpr char kLightSliceSystem[] = "media.light_slices";
 inline constexpr char kRenderSystem[] = "media.render";
