@@ -3,18 +3,9 @@
 // T_l = exp(−τ) from the light slices; V_mesh from the mesh shadow map with the smooth weighting of
 // seed 001 §III (never a hard cut through a billboard). Needs common/frame, lights, light_views,
 // transmittance, media/optics.
-#include "common/shadow_views.glsl"
+#include "media/mesh_shadow.glsl"
 #include "media/lamp_neighbourhood.glsl"
 #include "media/own_optical_depth.glsl"
-layout(binding = 4) uniform sampler2DArray uShadowDepth;  // the mesh shadow map, read as raw depth
-
-// Light-view depth stored in a shadow map texel (reversed Z), back to metres along the light axis.
-float shadowTexelDepth(GpuLightView v, float stored) {
-    float n = v.params.y, f = v.params.z;
-    if (v.params.x < 0.5) return n + (1.0 - stored) * (f - n);
-    float a = n / (f - n), b = n * f / (f - n);
-    return stored + a > 0.0 ? b / (stored + a) : 1e30;
-}
 
 // Seed 001 §III: instead of a lit/unlit test per pixel, compare the occluder depth the shadow map
 // stores with the receiver's depth and weight smoothly over the particle's own depth extent: the
@@ -48,25 +39,6 @@ float mediumMeshVisibility(int lightIndex, vec3 p, float softness) {
         }
     }
     return lit / 9.0;
-}
-
-// How far p lies in front of the shadow map's occluder along the light (metres; > 0 lit), at one
-// tap without filtering. Very large where nothing casts a shadow there.
-float meshShadowMargin(int lightIndex, vec3 p) {
-    GpuLight L = lights[lightIndex];
-    int first = int(L.spot.z);
-    if (first < 0) return 1e30;
-    GpuLightView v = shadowViews[lightViewIndex(first, int(L.spot.w), L.position.xyz, p)];
-    vec2 uv;
-    if (!lightViewUv(v, p, uv)) return 1e30;
-    float receiver = -(v.view * vec4(p, 1.0)).z;
-    return shadowTexelDepth(v, texture(uShadowDepth, vec3(uv, v.params2.x)).r) - receiver;
-}
-
-// The same comparison at one shadow-map tap, without the lateral filter: 1 lit, 0 shadowed, soft
-// only over the particle's depth extent.
-float meshVisibilityTap(int lightIndex, vec3 p, float softness) {
-    return 0.5 * (1.0 + erfApprox(meshShadowMargin(lightIndex, p) / (max(softness, 1e-4) * 1.41421356)));
 }
 
 // After meshVisibilityTap, which the lamp integration uses per node.

@@ -3,9 +3,16 @@
 //         the fragments' sun and lamps, a the sun's transport
 //   7     rgb albedo × the sun's radiance, w how far in front of its closest approach the centre
 //         ray's light is seen
-//   8..   per fragment-evaluated lamp, what of its light is taken per particle (albedo × mesh visibility)
+// SPLAT_CONSTANT (particles of a few pixels, where a fit has nothing to follow): F0 alone, then
+// the slot that is 7 above.
 const int MAX_FRAGMENT_LAMPS = 2;
-const uint PARTICLE_LIGHT_STRIDE = 8u + uint(MAX_FRAGMENT_LAMPS);
+#ifdef SPLAT_CONSTANT
+const uint PARTICLE_LIGHT_STRIDE = 2u;
+const uint SUN_SLOT = 1u;
+#else
+const uint PARTICLE_LIGHT_STRIDE = 8u;
+const uint SUN_SLOT = 7u;
+#endif
 
 // The lights the fragments evaluate (−1: none): the first directional light, whose phase function
 // can peak within a few pixels, and the point or spot lights whose 1/d² peaks across a particle.

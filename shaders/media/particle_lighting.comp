@@ -8,6 +8,7 @@
 // (mesh visibility × the medium's transmittance). The fragments multiply the sun's by its phase
 // function at their own ray (g = 0.99 peaks within a few pixels) and evaluate lamps themselves.
 // The odd cubic and even quartic terms follow a dense trail's sunward rim, which brightens sharply.
+// SPLAT_CONSTANT: the centre ray alone, for particles a few pixels wide (10⁶ of them).
 // LIGHTING_EXACT shades each ray as particles.frag shades a pixel; otherwise light is taken at the
 // ray's shading point: phase, the mesh shadow map with seed 001's smooth weighting over the
 // particle's depth, and the slices' transmittance integrated over the layer.
@@ -133,6 +134,12 @@ void main() {
     Billboard b = billboardOf(centre, radius);
     vec4 fit[7] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     vec4 j0 = sourceThrough(centre, particle, index, int(rank));
+    uint base = PARTICLE_LIGHT_STRIDE * rank;
+    vec3 sunFactor = uFragmentSun >= 0 ? particle.albedoSigma.rgb * lights[uFragmentSun].radiance.rgb : vec3(0.0);
+    particleLight[base + SUN_SLOT] = vec4(sunFactor, centreShadingOffset(centre, particle));
+#ifdef SPLAT_CONSTANT
+    particleLight[base] = j0;
+#else
     if (b.coversScreen) {  // a quad that covers the screen has no billboard coordinates: F0 throughout
         fit[0] = j0;
     } else {
@@ -145,15 +152,6 @@ void main() {
         fitBillboard(j0, inner, outer, impactSquared(centre + b.right * INNER, centre, radius),
                      impactSquared(centre + b.right * OUTER, centre, radius), fit);
     }
-    uint base = PARTICLE_LIGHT_STRIDE * rank;
     for (int k = 0; k < 7; ++k) particleLight[base + uint(k)] = fit[k];
-    vec3 sunFactor = uFragmentSun >= 0 ? particle.albedoSigma.rgb * lights[uFragmentSun].radiance.rgb : vec3(0.0);
-    particleLight[base + 7u] = vec4(sunFactor, centreShadingOffset(centre, particle));
-    // The lamps the fragments evaluate: what does not vary across the particle, taken at its centre.
-    for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) {
-        int i = uFragmentLamps[k];
-        vec3 factor = vec3(0.0);
-        if (i >= 0) factor = particle.albedoSigma.rgb * mediumMeshVisibility(i, centre, radius / 3.0);
-        particleLight[base + 8u + uint(k)] = vec4(factor, 0.0);
-    }
+#endif
 }

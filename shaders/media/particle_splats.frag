@@ -14,6 +14,7 @@
 #include "common/light_views.glsl"
 #include "common/transmittance.glsl"
 #include "media/spot_cone.glsl"
+#include "media/mesh_shadow.glsl"
 #endif
 
 layout(binding = 3) uniform sampler2D uSceneDepth;
@@ -21,18 +22,22 @@ layout(location = 1) uniform vec2 uFullResScale;
 
 flat in vec4 vCentreRadius;
 flat in float vSigma;
+#ifdef SPLAT_CONSTANT
+flat in vec4 vSource;
+#else
 in vec4 vSource;
 in vec2 vCorner;
 flat in vec4 vFit[4];
+#endif
 flat in vec4 vSun;
 flat in vec2 vPhase;
 #ifdef MEDIA_FRAGMENT_LAMPS
-flat in vec3 vLampFactor[MAX_FRAGMENT_LAMPS];
+flat in vec3 vAlbedo;
 
 // Lamp `light`'s light scattered by the particle's visible segment [lo, hi] of the ray (u from the
 // closest point), per unit albedo and radiance, as the layer's source: σ∫ρ(u)e^−τ(u)·S(u)du / α
-// with τ(u) the particle's own optical depth in front of u and S = shape·phase·T/d² (T the
-// slices' transmittance from the lamp). Where the ray passes the lamp within two deviations, 1/d²
+// with τ(u) the particle's own optical depth in front of u and S = shape·phase·V·T/d² (V the mesh
+// shadow map's visibility, T the slices' transmittance from the lamp). Where the ray passes the lamp within two deviations, 1/d²
 // peaks far more sharply than the kernel varies: LAMP_NODES Gauss–Legendre nodes in φ over the
 // part inside a spot's cone, u = u_l + b·tan φ (u_l the lamp's closest approach, b its distance),
 // as local_light_segment.glsl does with more, each with its own T and e^−τ (inside a dense
@@ -61,12 +66,15 @@ float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi,
         vec3 x = origin + dir * (tc + u);
         float phase = phaseValue(vPhase.x, vPhase.y, normalize(lamp - x), dir);
         float inFront = vSigma * radius * max(kernelSegment(beta, u / radius) - entry, 0.0);
-        sum += kLampWeights[j] * exp(-k * u * u - inFront - mediumOpticalDepth(light, x)) * phase * lightShape(light, x);
+        // Near the lamp its light comes from within about its distance, not from the whole kernel.
+        float visibility = lights[light].spot.z >= 0.0 ? meshVisibilityTap(light, x, 0.1 * distance(x, lamp)) : 1.0;
+        sum += kLampWeights[j] * exp(-k * u * u - inFront - mediumOpticalDepth(light, x)) * phase * lightShape(light, x) * visibility;
     }
     if (near) return vSigma * exp(-k * (radius * radius * beta * beta)) * sum * half_ / (b * alpha);
     vec3 toP = lamp - p;
     float d2 = max(dot(toP, toP), 1e-12);
-    return lightShape(light, p) * phaseValue(vPhase.x, vPhase.y, toP * inversesqrt(d2), dir) * exp(-mediumOpticalDepth(light, p)) / d2;
+    float visibility = lights[light].spot.z >= 0.0 ? meshVisibilityTap(light, p, radius / 3.0) : 1.0;
+    return lightShape(light, p) * phaseValue(vPhase.x, vPhase.y, toP * inversesqrt(d2), dir) * exp(-mediumOpticalDepth(light, p)) * visibility / d2;
 }
 #endif
 
@@ -89,8 +97,12 @@ void main() {
     segment -= kernelSegment(beta, -tc * invRadius);
 #endif
     float alpha = oneMinusExpNeg(vSigma * radius * max(segment, 0.0));
+#ifdef SPLAT_CONSTANT
+    vec4 fit = vSource;
+#else
     vec4 fit = vSource + (vFit[0] + vFit[1] * beta2) * beta2 + vFit[2] * (vCorner.x * vCorner.x * vCorner.x) +
                vFit[3] * (vCorner.y * vCorner.y * vCorner.y);
+#endif
     vec3 source = max(fit.rgb, vec3(0.0));
     if (uFragmentSun >= 0)  // the sun's phase at this pixel's own ray: g = 0.99 peaks within a few pixels
         source += vSun.rgb * (phaseValue(vPhase.x, vPhase.y, -lights[uFragmentSun].direction.xyz, dir) * max(fit.a, 0.0));
@@ -100,7 +112,7 @@ void main() {
     vec3 p = origin + dir * (tc - vSun.a);
     for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) {
         int light = uFragmentLamps[k];
-        if (light >= 0) source += vLampFactor[k] * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, beta, alpha, p);
+        if (light >= 0) source += vAlbedo * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, beta, alpha, p);
     }
 #endif
     outColor = vec4(source * alpha, alpha);

@@ -13,13 +13,17 @@ layout(std430, binding = 10) readonly buffer ParticleLight { vec4 particleLight[
 
 flat out vec4 vCentreRadius;  // origin-relative centre, radius
 flat out float vSigma;
+#ifdef SPLAT_CONSTANT
+flat out vec4 vSource;        // F0
+#else
 out vec4 vSource;             // F0 + gx·x + gy·y (an affine function of the billboard's plane: exact)
 out vec2 vCorner;             // x, y
 flat out vec4 vFit[4];        // r2, r4, cx, cy
+#endif
 flat out vec4 vSun;           // rgb: albedo × the sun's radiance, a: the centre ray's shading offset
 flat out vec2 vPhase;         // phase function (0 HG, 1 Rayleigh), g
 #ifdef MEDIA_FRAGMENT_LAMPS
-flat out vec3 vLampFactor[MAX_FRAGMENT_LAMPS];
+flat out vec3 vAlbedo;        // the lamps' light per fragment is scattered with it
 #endif
 
 const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
@@ -33,19 +37,23 @@ void main() {
     vSigma = particle.albedoSigma.w;
     vPhase = vec2(particle.extra.x, particle.emissionG.w);
     uint base = PARTICLE_LIGHT_STRIDE * uint(rank);
-    for (int k = 0; k < 4; ++k) vFit[k] = particleLight[base + 3u + uint(k)];
-    vSun = particleLight[base + 7u];
+    vSun = particleLight[base + SUN_SLOT];
 #ifdef MEDIA_FRAGMENT_LAMPS
-    for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) vLampFactor[k] = particleLight[base + 8u + uint(k)].rgb;
+    vAlbedo = particle.albedoSigma.rgb;
 #endif
     vec2 corner = kCorners[gl_VertexID];
-    vCorner = corner;
     Billboard b = billboardOf(pr.xyz, pr.w);
+#ifdef SPLAT_CONSTANT
+    vSource = particleLight[base];
+#else
+    for (int k = 0; k < 4; ++k) vFit[k] = particleLight[base + 3u + uint(k)];
+    vCorner = corner;
+    vSource = particleLight[base];
+    if (!b.coversScreen) vSource += particleLight[base + 1u] * corner.x + particleLight[base + 2u] * corner.y;
+#endif
     if (b.coversScreen) {
-        vSource = particleLight[base];
         gl_Position = vec4(corner, 0.5, 1.0);
         return;
     }
-    vSource = particleLight[base] + particleLight[base + 1u] * corner.x + particleLight[base + 2u] * corner.y;
     gl_Position = frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);
 }

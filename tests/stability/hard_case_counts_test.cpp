@@ -148,16 +148,17 @@ TEST_F(StabilityTest, MillionParticlesWithinBound) {
 //     fixed cost is paid by that warm-up; llvmpipe's binning scenes still move the figure by one
 //     36 MiB scene either way. Measured over three runs: particles +91 to +190 B, then blocks
 //     +77 to +114 B per particle.
-//   - Bounded: none of eight more frames is more than 96 MiB above the two-frame level, and the
+//   - Bounded: none of eight more frames is more than 160 MiB above the two-frame level, and the
 //     median of the last four is at most 64 MiB above the median of the first four (a leak of
 //     17 MB per frame, 17 B per particle, fails). The margins are llvmpipe's: frames of the same
-//     state move by up to ~100 MB either way (measured: particles 525–574 MB, blocks 600–638 MB,
-//     no trend over 12 frames; the medians of two halves of 8 frames differed by −22 to +42 MB
-//     over six runs). Comparing the highest frame of each half of six failed once in four runs.
+//     state move by up to ~120 MB either way (measured: particles 525–574 MB, blocks 600–638 MB,
+//     no trend over 12 frames; one CI run's blocks frames stepped 0 84 121 84 84 113 113 84 MB;
+//     the medians of two halves of 8 frames differed by −22 to +42 MB over six runs). Comparing
+//     the highest frame of each half of six failed once in four runs.
 TEST_F(StabilityTest, MillionParticlesMemoryIsBounded) {
     constexpr double kParticles = 1e6;
     constexpr double kBytesPerParticle = 300.0;
-    constexpr double kBand = 96.0 * (1 << 20);
+    constexpr double kBand = 160.0 * (1 << 20);
     constexpr double kTrend = 64.0 * (1 << 20);
     constexpr int kFrames = 8;
     // The frame's fixed cost is paid first, in a session of the same scene that is then closed:

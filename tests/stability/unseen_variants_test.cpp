@@ -36,7 +36,7 @@ const std::map<std::string, std::string> kBeyondBound = {
     {"variant_05_normal_tau30_spot_inside_gp0_50_n1_far_inside_through/fast",
      "a spot light inside one particle of optical depth 30: fast takes a lamp's light at one shading point per ray "
      "beyond two deviations of the lamp, where inside so dense a particle it falls by e^-30 across the segment "
-     "(balanced shades such frames per fragment: exact_around_dense_lamps)"},
+     "(balanced shades frames with a lamp inside the medium per fragment: exact_near_lamps)"},
 };
 
 std::vector<std::string> variantScenes() {

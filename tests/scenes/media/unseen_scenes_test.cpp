@@ -11,21 +11,39 @@
 #include <string>
 
 #include "media_test_support.h"
+#include "nimbus/base/settings.h"
 
 namespace nimbus::test::media {
 namespace {
 
 constexpr int kWidth = 192, kHeight = 108;
 constexpr double kUnseenBound = 0.10;
+// The fast tier's: it lights each particle once, from nine rays through it, with slices at two
+// texels per particle radius (quality preset `fast`). 15 %: three times the fast bound on
+// the content scenes (3–5 %); measured at most 5.7 % (unseen_forward_glow) where no lamp lies
+// inside the medium.
+constexpr double kUnseenFastBound = 0.15;
+// Where a lamp lies inside the medium, a few pixels around it hold most of the image's light
+// (RMS ~10× the mean luminance), and fast integrates the lamp per fragment without the exact
+// tier's compositing-order correction among the particles around it (balanced switches to the exact
+// shading there: exact_near_lamps). 60 %: measured 49 % (lamp in a τ 3 cloud) and 23 % (spot
+// inside fog, the camera in it), 2.5 % in a thin medium.
+constexpr double kUnseenFastLampInsideBound = 0.60;
 
 class UnseenScenes : public GlSceneTest {
 protected:
-    static void expectWithinBound(const std::string& scene) {
-        const FramePair frames = renderBoth(mediaScene(scene), 0.0, kWidth, kHeight);
-        const auto metrics = nimbus::media::reference::compareImages(frames.realtime, frames.reference);
-        EXPECT_EQ(metrics.nonfinite, 0u) << scene;
-        EXPECT_LE(metrics.relRmse, kUnseenBound) << scene;
-        std::printf("[ measured ] %s rel_rmse=%.4f (bound %.2f)\n", scene.c_str(), metrics.relRmse, kUnseenBound);
+    // Exact and balanced within 10 %, fast within its bound, all against one reference render.
+    static void expectWithinBound(const std::string& scene, double fastBound = kUnseenFastBound) {
+        sandbox::Session session(particlesMode(mediaScene(scene), 0.0));
+        const assets::RgbImage reference = renderReference(session, kWidth, kHeight);
+        const std::pair<const char*, double> tiers[] = {{"exact", kUnseenBound}, {"balanced", kUnseenBound}, {"fast", fastBound}};
+        for (const auto& [quality, bound] : tiers) {
+            session.app().resource<Settings>().set("quality", quality, "test");
+            const auto metrics = nimbus::media::reference::compareImages(session.renderRealtime(kWidth, kHeight), reference);
+            EXPECT_EQ(metrics.nonfinite, 0u) << scene << ", " << quality;
+            EXPECT_LE(metrics.relRmse, bound) << scene << ", " << quality;
+            std::printf("[ measured ] %s %s rel_rmse=%.4f (bound %.2f)\n", scene.c_str(), quality, metrics.relRmse, bound);
+        }
     }
 };
 
@@ -42,16 +60,16 @@ TEST_F(UnseenScenes, AlbedoMix) { expectWithinBound("unseen_albedo_mix"); }     
 // Spot and point lights, outside, near and inside the medium.
 TEST_F(UnseenScenes, SpotIntoFog) { expectWithinBound("unseen_spot_into_fog"); }             // 0.77 %
 TEST_F(UnseenScenes, PointNearCloud) { expectWithinBound("unseen_point_near"); }             // 2.8 %
-TEST_F(UnseenScenes, PointInsideThinMedium) { expectWithinBound("unseen_point_inside"); }    // tau 0.5: 3.1 %
+TEST_F(UnseenScenes, PointInsideThinMedium) { expectWithinBound("unseen_point_inside", kUnseenFastLampInsideBound); }    // tau 0.5: 3.1 %
 // A point light inside a dense cloud (tau 3): radiance peaks at ~34 in a few pixels around the
 // lamp, and rel-RMSE divides by a mean of ~0.3, so those pixels must be right within a few percent.
 // 6.8 %; it was 108 % while one shading point per particle took the lamp's 1/d² peak, its phase
 // angle and its transmittance, and compositing order dimmed the peak by whole particles
 // (lighting.glsl segmentSource, local_light_segment.glsl, lamp_neighbourhood.glsl).
-TEST_F(UnseenScenes, PointInsideDenseCloud) { expectWithinBound("unseen_point_inside_dense"); }
+TEST_F(UnseenScenes, PointInsideDenseCloud) { expectWithinBound("unseen_point_inside_dense", kUnseenFastLampInsideBound); }
 // A spot light inside a fog, the camera inside it too: the beam's apex holds most of the image's
 // energy. 3.5 % (33 % while the cone was taken at one point per particle: its edges smeared).
-TEST_F(UnseenScenes, SpotInsideFog) { expectWithinBound("unseen_spot_inside"); }
+TEST_F(UnseenScenes, SpotInsideFog) { expectWithinBound("unseen_spot_inside", kUnseenFastLampInsideBound); }
 // Meshes and the medium shadowing each other, meshes through the medium, the camera inside it.
 TEST_F(UnseenScenes, MeshShadowsMedium) { expectWithinBound("unseen_mesh_shadows_medium"); } // 0.36 %
 TEST_F(UnseenScenes, MeshThroughMedium) { expectWithinBound("unseen_mesh_through_medium"); } // 1.3 %

@@ -119,18 +119,19 @@ struct FragmentLamps {
 };
 FragmentLamps fragmentLamps(const std::vector<assets::ResolvedLight>& lights);
 
-// Per-particle lighting (the fast tiers): each particle's source as a linear field over its
-// billboard, in draw order, evaluated at five rays (`exact`: as particles.frag shades a pixel).
+// Per-particle lighting (the fast tiers): each particle's source fitted over its billboard, in draw
+// order, from nine rays through it (`exact`: each shaded as particles.frag shades a pixel;
+// `constant`: the centre ray alone, for particles a few pixels wide).
 class ParticleLightingPass {
 public:
     ParticleLightingPass();
     void add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer, std::size_t particles,
-             bool exact, const FragmentLamps& lamps);
+             bool exact, bool constant, const FragmentLamps& lamps);
     void bind() const;  // the lighting buffer, for the splats
 
 private:
-    gpu::Program fast_;
-    std::unique_ptr<LocalLightPrograms> exact_;  // built when first asked for
+    const gpu::Program& program(const std::vector<assets::ResolvedLight>& lights, bool exact, bool constant);
+    std::unique_ptr<LocalLightPrograms> programs_[4];  // by exact + 2·constant, built when first asked for
     gpu::Buffer light_;
     std::size_t capacity_ = 0;
 };
@@ -141,12 +142,12 @@ class ParticleSplatPass {
 public:
     ParticleSplatPass();
     render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
-                               const ParticleLightingPass& lighting, bool eyeInside, const FragmentLamps& lamps,
+                               const ParticleLightingPass& lighting, bool eyeInside, bool constant, const FragmentLamps& lamps,
                                const MediaTarget& target);
 
 private:
-    const gpu::Program& program(bool eyeInside, bool lamps);
-    gpu::Program programs_[4];  // by eyeInside + 2·lamps, built when first asked for
+    const gpu::Program& program(bool eyeInside, bool lamps, bool constant);
+    gpu::Program programs_[8];  // by eyeInside + 2·lamps + 4·constant, built when first asked for
     gpu::Texture kernelTable_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };

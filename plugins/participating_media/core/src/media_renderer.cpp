@@ -76,14 +76,20 @@ double splatCoverage(const ParticleSet& particles, const render::View& view) {
     return covered / pixels;
 }
 
-bool lampInsideDenseParticle(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights, const glm::dvec3&) {
+bool lampAmongParticles(const std::vector<assets::ResolvedLight>& lights, const assets::Aabb& bounds) {
+    return std::any_of(lights.begin(), lights.end(), [&](const assets::ResolvedLight& l) {
+        return l.params.type != assets::LightType::Directional && bounds.contains(l.position);
+    });
+}
+
+bool lampInsideMedium(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights, const glm::dvec3&) {
     // Peak column through a particle's centre: σ ∫ e^{−k u²} du over the chord ≈ 0.8355·σR.
     constexpr double kColumnPerSigmaRadius = 0.8355;
     for (const auto& light : lights) {
         if (light.params.type == assets::LightType::Directional) continue;
         for (std::size_t i = 0; i < particles.size(); ++i) {
             const double r = particles.radius[i];
-            if (kColumnPerSigmaRadius * particles.sigma[i] * r > kDenseLampColumn && glm::length(light.position - particles.position[i]) < r)
+            if (kColumnPerSigmaRadius * particles.sigma[i] * r > kLampMediumColumn && glm::length(light.position - particles.position[i]) < r)
                 return true;
         }
     }
@@ -253,7 +259,9 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
     if (particles_ == nullptr || particles_->empty()) return;
     const render::View& v = context.view;
     float scale = settings_.mediaScale > 0.0f ? std::min(settings_.mediaScale, 1.0f) : 1.0f;
-    if (settings_.mediaScaleAuto) scale = splatCoverage(*particles_, v) > kHalfScaleCoverage ? 0.5f : 1.0f;
+    // A lamp among the particles lights a peak a few pixels wide, which half resolution blurs away.
+    const double coverage = splatCoverage(*particles_, v);
+    if (settings_.mediaScaleAuto) scale = coverage > kHalfScaleCoverage && !lampAmongParticles(context.input.lights, bounds_) ? 0.5f : 1.0f;
     stats_.mediaScale = scale;
     MediaTarget target;
     target.size = glm::max(glm::ivec2(glm::round(glm::vec2(v.width, v.height) * scale)), glm::ivec2(1));
@@ -300,12 +308,16 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
         if (!billboardPass_) billboardPass_ = std::make_unique<BillboardPass>();
         media = billboardPass_->add(graph, context, *buffer_, target);
     } else if (settings_.lighting != ParticleLighting::Fragment &&
-               !(settings_.exactAroundDenseLamps && lampInsideDenseParticle(*particles_, context.input.lights, v.origin))) {
+               !(settings_.exactNearLamps && lampInsideMedium(*particles_, context.input.lights, v.origin))) {
         if (!lightingPass_) lightingPass_ = std::make_unique<ParticleLightingPass>();
         if (!splatPass_) splatPass_ = std::make_unique<ParticleSplatPass>();
         const FragmentLamps lamps = fragmentLamps(context.input.lights);
-        lightingPass_->add(graph, context, *buffer_, particles_->size(), settings_.lighting == ParticleLighting::ParticleExact, lamps);
-        media = splatPass_->add(graph, context, *buffer_, *lightingPass_, eyeInsideMedium(*particles_, v), lamps, target);
+        // Billboards of a few pixels: a fit across them has nothing to follow, and at 10⁶ particles
+        // its nine rays and varyings cost more than the pixels.
+        const bool constant = coverage * v.width * v.height < kConstantSplatPixels * static_cast<double>(particles_->size());
+        stats_.constantSource = constant;
+        lightingPass_->add(graph, context, *buffer_, particles_->size(), settings_.lighting == ParticleLighting::ParticleExact, constant, lamps);
+        media = splatPass_->add(graph, context, *buffer_, *lightingPass_, eyeInsideMedium(*particles_, v), constant, lamps, target);
     } else {
         stats_.exactLighting = true;
         if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();

@@ -15,18 +15,27 @@ constexpr GLuint kShadowDepthUnit = 4;
 constexpr GLuint kLocalSize = 64;
 constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
-constexpr std::size_t kBytesPerParticle = (8 + kMaxFragmentLamps) * sizeof(glm::vec4);
+constexpr std::size_t kSlotsPerParticle = 8, kSlotsPerConstantParticle = 2;  // particle_light_layout.glsl
 }  // namespace
 
-ParticleLightingPass::ParticleLightingPass()
-    : fast_(gpu::compileProgram({.compute = "media/particle_lighting.comp"})) {}
+ParticleLightingPass::ParticleLightingPass() = default;
+
+const gpu::Program& ParticleLightingPass::program(const std::vector<assets::ResolvedLight>& lights, bool exact, bool constant) {
+    std::unique_ptr<LocalLightPrograms>& p = programs_[(exact ? 1 : 0) + (constant ? 2 : 0)];
+    if (!p) {
+        gpu::ProgramDesc desc{.compute = "media/particle_lighting.comp"};
+        if (exact) desc.defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"};
+        if (constant) desc.defines.push_back("SPLAT_CONSTANT");
+        p = std::make_unique<LocalLightPrograms>(desc);
+    }
+    return p->forLights(lights);
+}
 
 void ParticleLightingPass::add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
-                               std::size_t particles, bool exact, const FragmentLamps& lamps) {
-    if (exact && !exact_)
-        exact_ = std::make_unique<LocalLightPrograms>(gpu::ProgramDesc{.compute = "media/particle_lighting.comp", .defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"}});
-    const gpu::Program& program = exact ? exact_->forLights(context.input.lights) : fast_;
-    const std::size_t bytes = std::max<std::size_t>(particles, 1) * kBytesPerParticle;  // the buffer fills when the upload pass runs
+                               std::size_t particles, bool exact, bool constant, const FragmentLamps& lamps) {
+    const gpu::Program& program = this->program(context.input.lights, exact, constant);
+    // Sized from the set: the buffer fills when the upload pass runs.
+    const std::size_t bytes = std::max<std::size_t>(particles, 1) * (constant ? kSlotsPerConstantParticle : kSlotsPerParticle) * sizeof(glm::vec4);
     if (!light_ || capacity_ < bytes) {
         capacity_ = std::max(bytes, capacity_ * 3 / 2);
         light_ = gpu::createBuffer(capacity_, nullptr, 0);

@@ -11,29 +11,31 @@ namespace nimbus::media {
 
 namespace {
 constexpr GLuint kKernelTableUnit = 6;
+constexpr GLuint kShadowDepthUnit = 4;  // media/mesh_shadow.glsl uShadowDepth
 constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
 }
 
-ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) { program(false, false); }
+ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 
-const gpu::Program& ParticleSplatPass::program(bool eyeInside, bool lamps) {
-    gpu::Program& p = programs_[(eyeInside ? 1 : 0) + (lamps ? 2 : 0)];
+const gpu::Program& ParticleSplatPass::program(bool eyeInside, bool lamps, bool constant) {
+    gpu::Program& p = programs_[(eyeInside ? 1 : 0) + (lamps ? 2 : 0) + (constant ? 4 : 0)];
     if (!p) {
         gpu::ProgramDesc desc{.vertex = "media/particle_splats.vert", .fragment = "media/particle_splats.frag"};
         if (eyeInside) desc.defines.push_back("MEDIA_EYE_INSIDE");
         if (lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
+        if (constant) desc.defines.push_back("SPLAT_CONSTANT");
         p = gpu::compileProgram(desc);
     }
     return p;
 }
 
 render::ResourceHandle ParticleSplatPass::add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
-                                              const ParticleLightingPass& lighting, bool eyeInside, const FragmentLamps& lamps,
-                                              const MediaTarget& target) {
-    const gpu::Program& program = this->program(eyeInside, lamps.lamps[0] >= 0);
+                                              const ParticleLightingPass& lighting, bool eyeInside, bool constant,
+                                              const FragmentLamps& lamps, const MediaTarget& target) {
+    const gpu::Program& program = this->program(eyeInside, lamps.lamps[0] >= 0, constant);
     struct Data {
-        render::ResourceHandle media, depth, slices;
+        render::ResourceHandle media, depth, slices, shadowMap;
     };
     const int w = target.size.x, h = target.size.y;
     const auto& data = graph.addPass<Data>(
@@ -42,6 +44,7 @@ render::ResourceHandle ParticleSplatPass::add(render::FrameGraph& graph, render:
             d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
             d.depth = builder.read(context.sceneDepth);
             if (lamps.lamps[0] >= 0 && context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
+            if (lamps.lamps[0] >= 0 && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
         },
         [this, &program, &context, &buffer, &lighting, lamps, w, h, scale = target.fullResScale](const render::PassResources& resources,
                                                                                           const Data& d) {
@@ -60,6 +63,7 @@ render::ResourceHandle ParticleSplatPass::add(render::FrameGraph& graph, render:
             glBindTextureUnit(render::kSceneDepthUnit, resources.id(d.depth));
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             if (d.slices.valid()) glBindTextureUnit(render::kTransmittanceUnit, resources.id(d.slices));
+            if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
             glProgramUniform2f(program.id(), 1, scale.x, scale.y);
             glProgramUniform1i(program.id(), kFragmentSunLocation, lamps.sun);
             if (lamps.lamps[0] >= 0) glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());

@@ -152,7 +152,7 @@ MediaRenderSettings readMediaSettings(const Settings* settings) {
     }
     if (settings->text("slice_deposit") == "auto") s.sliceDeposit = SliceDeposit::Auto;
     else if (auto v = settings->boolean("slice_deposit")) s.sliceDeposit = *v ? SliceDeposit::On : SliceDeposit::Off;
-    if (auto v = settings->boolean("exact_around_dense_lamps")) s.exactAroundDenseLamps = *v;
+    if (auto v = settings->boolean("exact_near_lamps")) s.exactNearLamps = *v;
     if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
     if (auto v = settings->boolean("layer_light")) s.layerLight = *v;
     if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
@@ -165,7 +165,7 @@ MediaRenderSettings readMediaSettings(const Settings* settings) {
         if (*v == "smooth") s.blockShading = BlockShading::Smooth;
         else if (*v == "seam") s.blockShading = BlockShading::Seam;
         else if (*v == "exact") s.blockShading = BlockShading::Exact;
-        else throwInputError("--set block_shading", *v, "", "unknown block shading (known: smooth, seam, exact)");
+        else throwInputError(settings->origin("block_shading"), *v, "", "unknown block shading (known: smooth, seam, exact)");
     }
     return s;
 }
@@ -203,13 +203,13 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("quality", "fast, balanced or exact (the library's default; sandbox render's is balanced): the settings each picks are in docs/PERFORMANCE.md");
     for (const QualityPreset& preset : kQualityPresets)
         settings.definePreset("quality", preset.name, {preset.settings.begin(), preset.settings.end()});
-    settings.declare("mode", "media mode: particles (default) or blocks");
+    settings.declare("mode", "media mode: particles (default), blocks, or billboards (the game-industry yardstick: flat, unshadowed sprites)");
     settings.declare("slices", "light slices per light view, 4..32 (default: chosen from the medium)");
     settings.declare("slice_resolution", "texels per side of a light slice, or auto (chosen from the particles' size as the light sees them; see slice_detail); default 256");
     settings.declare("lighting", "particles mode: where light is evaluated: fragment (default, exact), particle (per particle, linear across it) or particle_exact");
     settings.declare("slice_detail", "with slice_resolution=auto: slice texels across the median particle's radius, 0.25..16 (default 3)");
     settings.declare("slice_deposit", "light slices drawn as one float per particle and slab, then summed: on, off (default) or auto (on unless a point or spot light's views are among them)");
-    settings.declare("exact_around_dense_lamps", "with lighting=particle or particle_exact: shade per fragment where a lamp lies inside an optically thick particle (column > 4): on or off (default)");
+    settings.declare("exact_near_lamps", "with lighting=particle or particle_exact: shade per fragment while a point or spot light lies inside the medium (a particle with a central column over 0.1): on or off (default)");
     settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
     settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)), more in optically thick media or around a lamp inside them)");

@@ -19,6 +19,7 @@ struct Aabb {
     void extend(const Aabb& b) { if (!b.empty()) { extend(b.min); extend(b.max); } }
     glm::dvec3 center() const { return 0.5 * (min + max); }
     glm::dvec3 extent() const { return max - min; }
+    bool contains(const glm::dvec3& p) const { return glm::all(glm::greaterThanEqual(p, min)) && glm::all(glm::lessThanEqual(p, max)); }
 };
 
 // Which nodes belong to the scene that is shown: the subtrees of Scene::rootNodes. Nodes outside

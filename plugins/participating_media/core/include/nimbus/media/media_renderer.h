@@ -54,10 +54,11 @@ struct MediaRenderSettings {
     // pass within float rounding); auto: unless a lamp's views are among them.
     SliceDeposit sliceDeposit = SliceDeposit::Off;
     ParticleLighting lighting = ParticleLighting::Fragment;  // particles mode
-    // With per-particle lighting: shade a frame per fragment after all where a lamp lies inside a
-    // particle denser than kDenseLampColumn (inside it, the lamp's light falls across the particle
-    // faster than the fits or the fragments' one-point estimate follow).
-    bool exactAroundDenseLamps = false;
+    // With per-particle lighting: shade a frame per fragment after all where a lamp lies inside the
+    // medium (lampInsideMedium). Around it 1/d² peaks across overlapping particles, and how much of
+    // each lies in front of the lamp decides what the compositing order gets wrong, which only the
+    // exact tier's lamp neighbourhoods correct (a lamp in a τ 3 cloud: 49% per particle, 7% exact).
+    bool exactNearLamps = false;
     bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
     bool layerLight = true;    // particles mode: integrate the light's transmittance over each particle's layer
                                // (off: take it at one point: up to 26% less frame time in docs/PERFORMANCE.md,
@@ -68,7 +69,8 @@ struct MediaRenderSettings {
     BlockShading blockShading = BlockShading::Seam;  // blocks mode: where a mesh is seen in the medium
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     bool mediaScaleAuto = false;  // ½ where the particles cover the image more than kHalfScaleCoverage times
-                                  // over (the half-resolution pass then pays for its upsampling), else 1
+                                  // over (the half-resolution pass then pays for its upsampling) and no
+                                  // lamp lies among them (its peak is pixels wide), else 1
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2 (common/upsample.glsl)
 };
 
@@ -83,7 +85,8 @@ struct MediaFrameStats {
                                          // (block_shading=seam: near the seam only)
     glm::ivec2 impostorAtlas{0};  // blocks mode: the camera's impostor atlas size
     float mediaScale = 1.0f;      // the media target's resolution relative to the frame, this frame
-    bool exactLighting = false;   // particles mode: shaded per fragment this frame (exactAroundDenseLamps included)
+    bool exactLighting = false;   // particles mode: shaded per fragment this frame (exactNearLamps included)
+    bool constantSource = false;  // per-particle lighting from one ray per particle (kConstantSplatPixels)
 };
 
 class LightSlicePass;
@@ -155,11 +158,17 @@ private:
 // image area), each clipped to the screen: what the splat floor pays for, estimated on the CPU.
 double splatCoverage(const ParticleSet& particles, const render::View& view);
 inline constexpr double kHalfScaleCoverage = 2.5;
+// Below this many billboard pixels per particle, per-particle lighting takes one ray per particle:
+// at 16, jet.gltf at 192×108 (16 px per particle) doubled its error to 5%.
+inline constexpr double kConstantSplatPixels = 2.0;
 
-// Whether a point or spot light lies inside a particle whose column through its centre exceeds
-// kDenseLampColumn (MediaRenderSettings::exactAroundDenseLamps).
-inline constexpr double kDenseLampColumn = 4.0;
-bool lampInsideDenseParticle(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights, const glm::dvec3& origin);
+// Whether a point or spot light lies inside `bounds` (the particles').
+bool lampAmongParticles(const std::vector<assets::ResolvedLight>& lights, const assets::Aabb& bounds);
+
+// Whether a point or spot light lies inside a particle that takes more than a tenth of a ray
+// through its centre (a column over kLampMediumColumn): MediaRenderSettings::exactNearLamps.
+inline constexpr double kLampMediumColumn = 0.1;
+bool lampInsideMedium(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights, const glm::dvec3& origin);
 
 // Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
 bool eyeInsideMedium(const ParticleSet& particles, const render::View& view);

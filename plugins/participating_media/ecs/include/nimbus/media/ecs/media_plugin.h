@@ -36,7 +36,7 @@ struct QualityPreset {
 inline const QualityPreset kQualityPresets[] = {
     {"fast", {{"lighting", "particle"}, {"slice_deposit", "auto"}, {"slices", "16"}, {"slice_resolution", "auto"},
               {"slice_detail", "2"}, {"media_scale", "auto"}, {"pcf_radius", "0"}, {"shadow_map_size", "1024"}}},
-    {"balanced", {{"lighting", "particle_exact"}, {"exact_around_dense_lamps", "on"}, {"slice_deposit", "auto"},
+    {"balanced", {{"lighting", "particle_exact"}, {"exact_near_lamps", "on"}, {"slice_deposit", "auto"},
                   {"slice_resolution", "auto"}, {"slice_detail", "4"}}},
     {"exact", {}},
 };

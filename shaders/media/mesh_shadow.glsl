@@ -1,0 +1,32 @@
+// The mesh shadow map read as raw depth, for the medium (lighting.glsl, particle_splats.frag): a
+// comparison with the receiver's depth along the light, softened over a depth, never a hard cut.
+// Needs common/lights.glsl and common/light_views.glsl.
+#include "common/shadow_views.glsl"
+layout(binding = 4) uniform sampler2DArray uShadowDepth;  // the mesh shadow map, read as raw depth
+
+// Light-view depth stored in a shadow map texel (reversed Z), back to metres along the light axis.
+float shadowTexelDepth(GpuLightView v, float stored) {
+    float n = v.params.y, f = v.params.z;
+    if (v.params.x < 0.5) return n + (1.0 - stored) * (f - n);
+    float a = n / (f - n), b = n * f / (f - n);
+    return stored + a > 0.0 ? b / (stored + a) : 1e30;
+}
+
+// How far p lies in front of the shadow map's occluder along the light (metres; > 0 lit), at one
+// tap without filtering. Very large where nothing casts a shadow there.
+float meshShadowMargin(int lightIndex, vec3 p) {
+    GpuLight L = lights[lightIndex];
+    int first = int(L.spot.z);
+    if (first < 0) return 1e30;
+    GpuLightView v = shadowViews[lightViewIndex(first, int(L.spot.w), L.position.xyz, p)];
+    vec2 uv;
+    if (!lightViewUv(v, p, uv)) return 1e30;
+    float receiver = -(v.view * vec4(p, 1.0)).z;
+    return shadowTexelDepth(v, texture(uShadowDepth, vec3(uv, v.params2.x)).r) - receiver;
+}
+
+// The same comparison at one shadow-map tap, without the lateral filter: 1 lit, 0 shadowed, soft
+// only over the particle's depth extent.
+float meshVisibilityTap(int lightIndex, vec3 p, float softness) {
+    return 0.5 * (1.0 + erfApprox(meshShadowMargin(lightIndex, p) / (max(softness, 1e-4) * 1.41421356)));
+}
