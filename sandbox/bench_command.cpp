@@ -150,6 +150,13 @@ int run(const BenchOptions& o) {
     const auto referenceStart = std::chrono::steady_clock::now();
     const auto reference = makeReferenceScene(*session, "", width, height);
     run.particles = reference->particles.size();
+    // Every --only names a setting of the sweep, checked before the reference's minutes are spent.
+    std::vector<BenchConfig> configs = standardSweep(reference->particles, media::lampPositions(reference->inputs.lights));
+    for (const std::string& name : o.only)
+        if (std::none_of(configs.begin(), configs.end(), [&](const BenchConfig& c) { return c.name == name; }))
+            throwInputError("--only", name, "", "matches no setting of the sweep");
+    if (!o.only.empty())
+        std::erase_if(configs, [&](const BenchConfig& c) { return std::find(o.only.begin(), o.only.end(), c.name) == o.only.end(); });
     media::reference::ReferenceSettings referenceSettings;
     referenceSettings.width = width;
     referenceSettings.height = height;
@@ -157,11 +164,6 @@ int run(const BenchOptions& o) {
     const assets::RgbImage referenceImage = media::reference::renderReference(reference->inputs, referenceSettings);
     run.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
 
-    std::vector<BenchConfig> configs = standardSweep(reference->particles, media::lampPositions(reference->inputs.lights));
-    if (!o.only.empty()) {
-        std::erase_if(configs, [&](const BenchConfig& c) { return std::find(o.only.begin(), o.only.end(), c.name) == o.only.end(); });
-        if (configs.empty()) throwInputError("--only", o.only.front(), "", "matches no setting of the sweep");
-    }
     {
         ProgressBar progress("bench " + std::to_string(configs.size()) + " settings", configs.size());
         run.results = runSweep(*session, configs, width, height, referenceImage, {o.frames, 3},

@@ -14,5 +14,6 @@ CommandRunner addReferenceCommand(CLI::App& app);
 CommandRunner addCompareCommand(CLI::App& app);
 CommandRunner addValidateCommand(CLI::App& app);
 CommandRunner addBenchCommand(CLI::App& app);
+CommandRunner addSettingsCommand(CLI::App& app);
 
 }  // namespace nimbus::sandbox

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     runners["compare"] = addCompareCommand(app);
     runners["validate"] = addValidateCommand(app);
     runners["bench"] = addBenchCommand(app);
+    runners["settings"] = addSettingsCommand(app);
 
     try {
         app.parse(argc, argv);

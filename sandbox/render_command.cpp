@@ -138,6 +138,13 @@ int run(const RenderOptions& o) {
             stats["media_particles"] = media->renderer->stats().particles;
             stats["media_slices"] = media->renderer->stats().slices;
             stats["media_slice_views"] = media->renderer->stats().sliceViews;
+            // What the "auto" settings chose this frame.
+            stats["media_slice_resolution"] = media->renderer->stats().sliceResolution;
+            stats["media_scale_used"] = media->renderer->stats().mediaScale;
+            if (frame.settings.mode == media::MediaMode::Particles) {
+                stats["media_exact_lighting"] = media->renderer->stats().exactLighting;
+                stats["media_constant_source"] = media->renderer->stats().constantSource;
+            }
             if (frame.settings.mode == media::MediaMode::Blocks) {
                 stats["media_blocks"] = media->renderer->stats().blocks;
                 stats["media_lamp_slice_particles"] = media->renderer->stats().lampSliceParticles;
@@ -170,13 +177,13 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--out", options->out, "output image: .exr (linear radiance) or .png (sRGB); repeatable");
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
-    cmd->add_option("--mode", options->mode, "media mode: particles (default) or blocks");
+    cmd->add_option("--mode", options->mode, "media mode: particles (default), blocks or billboards");
     cmd->add_option("--quality", options->quality, "fast, balanced (default) or exact");
     cmd->add_option("--budget-ms", options->budget,
                     "frame budget: walk the quality ladder and keep the lowest-error setting whose frames fit");
     cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));
     cmd->add_option("--camera", options->camera, "camera (camera or node name); default: the scene's first");
-    cmd->add_option("--set", options->settings, "KEY=VALUE setting (repeatable)");
+    cmd->add_option("--set", options->settings, "KEY=VALUE setting (repeatable; `sandbox settings` lists them)");
     cmd->add_option("--stats", options->stats, "write frame timings and renderer info as JSON");
     cmd->add_option("--frames", options->frames, "timed frames for --stats (at least 20)")->capture_default_str();
     cmd->add_option("--exposure", options->exposure, "PNG exposure multiplier")->capture_default_str()->check(CLI::PositiveNumber);

@@ -20,6 +20,8 @@ Session::Session(const SessionOptions& options) {
     app_->addPlugin<media::ecs::MediaPlugin>();
     for (const auto& assignment : options.settings) app_->resource<Settings>().assign(assignment);
     for (const auto& [assignment, origin] : options.options) app_->resource<Settings>().assign(assignment, origin);
+    // Checked now, so a bad value is refused even for a scene the media plugin has nothing to draw in.
+    (void)media::ecs::readMediaSettings(&app_->resource<Settings>());
     scene::spawnScene(app_->world(), scene_);
     scene::simulateTo(*app_, options.time);
 }

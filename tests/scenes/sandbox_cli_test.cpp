@@ -185,6 +185,12 @@ TEST(SandboxRender, RefusesBadArgumentsWithAReason) {
         {{"render", box, "--set", "no_such_setting=1"}, "no_such_setting", true},
         {{"render", box, "--set", "shadow_map_size"}, "shadow_map_size", true},
         {{"render", box, "--stats", "/dev/null", "--frames", "5"}, "--frames", true},
+        {{"render", box, "--quality", "turbo"}, "--quality", true},
+        {{"render", box, "--mode", "voxels"}, "--mode", true},
+        {{"render", box, "--budget-ms", "0"}, "--budget-ms", true},
+        {{"render", box, "--budget-ms", "NaN"}, "--budget-ms", true},
+        {{"render", box, "--budget-ms", "-5"}, "--budget-ms", true},
+        {{"render", box, "--budget-ms", "abc"}, "--budget-ms", true},
         {{}, "subcommand", false},
     };
     for (const Case& c : cases) {
@@ -201,6 +207,64 @@ TEST(SandboxRender, RefusesBadArgumentsWithAReason) {
         }
         EXPECT_TRUE(r.out.empty()) << "nothing on stdout: " << r.out;
     }
+}
+
+// A scene's render block is checked like the command line, and the message names the node and field.
+TEST(SandboxRender, RefusesAnUnknownQualityInASceneNamingTheField) {
+    TempFolder out;
+    std::ifstream in(kContent / "scenes/smoke.gltf");
+    nlohmann::json gltf = nlohmann::json::parse(in);
+    for (auto& node : gltf["nodes"])
+        if (node.contains("extensions") && node["extensions"].contains("NIMBUS_participating_media"))
+            node["extensions"]["NIMBUS_participating_media"]["render"] = {{"quality", "turbo"}};
+    // Buffers are referenced relative to the scene: the .bin goes beside the copy.
+    const fs::path scene = out / "turbo.gltf";
+    std::ofstream(scene) << gltf.dump();
+    fs::copy_file(kContent / "scenes/smoke.bin", out / "smoke.bin");
+    const ProcessResult r = sandbox({"render", scene.string(), "--size", "32x18", "--out", (out / "x.png").string()});
+    expectRefused(r);
+    EXPECT_EQ(r.errLines().size(), 1u) << explain(r);
+    for (const char* part : {"render.quality", "turbo", "fast, balanced, exact"})
+        EXPECT_NE(r.err.find(part), std::string::npos) << part << ": " << explain(r);
+}
+
+// --budget-ms walks the quality ladder and reports the rung it keeps: a generous budget keeps the
+// lowest-error rung, an impossible one the fastest.
+TEST(SandboxRender, BudgetReportsTheChosenRung) {
+    TempFolder out;
+    for (const auto& [budget, expected] : {std::pair<const char*, const char*>{"100000", "exact"},
+                                           std::pair<const char*, const char*>{"0.001", "fast media_scale=0.25"}}) {
+        const fs::path json = out / "stats.json";
+        const ProcessResult r = sandbox({"render", (kContent / "scenes/smoke.gltf").string(), "--time", "2", "--size", "48x27",
+                                         "--budget-ms", budget, "--stats", json.string(), "--out", (out / "b.png").string()});
+        ASSERT_EQ(r.exitCode, 0) << explain(r);
+        EXPECT_NE(r.out.find(std::string("chose ") + expected), std::string::npos) << r.out;
+        std::ifstream in(json);
+        const nlohmann::json stats = nlohmann::json::parse(in);
+        EXPECT_EQ(stats.at("chosen").get<std::string>(), expected);
+        EXPECT_DOUBLE_EQ(stats.at("budget_ms").get<double>(), std::stod(budget));
+    }
+}
+
+TEST(SandboxRender, QualityIsReportedInTheStats) {
+    TempFolder out;
+    for (const char* quality : {"fast", "balanced", "exact"}) {
+        const fs::path json = out / "stats.json";
+        const ProcessResult r = sandbox({"render", (kContent / "scenes/smoke.gltf").string(), "--time", "2", "--size", "48x27",
+                                         "--quality", quality, "--stats", json.string(), "--out", (out / "q.png").string()});
+        ASSERT_EQ(r.exitCode, 0) << explain(r);
+        std::ifstream in(json);
+        const nlohmann::json stats = nlohmann::json::parse(in);
+        EXPECT_EQ(stats.at("quality").get<std::string>(), quality);
+        EXPECT_EQ(stats.at("media_exact_lighting").get<bool>(), std::string(quality) == "exact") << quality;
+    }
+}
+
+TEST(SandboxSettings, ListsEveryTierAndSetting) {
+    const ProcessResult r = sandbox({"settings"});
+    ASSERT_EQ(r.exitCode, 0) << explain(r);
+    for (const char* key : {"quality", "mode", "lighting", "slice_deposit", "media_scale", "shadow_map_size", "  fast", "  balanced", "  exact"})
+        EXPECT_NE(r.out.find(key), std::string::npos) << key << " missing from:\n" << r.out;
 }
 
 TEST(SandboxRender, HelpPrintsTheUsage) {

@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -246,10 +249,9 @@ bool samePermuted(const ParticleSet& a, const ParticleSet& b) {
     return true;
 }
 
-// FAILS today: a scene refused for its render overrides leaves the values it set before the failing
-// check in Settings (spawnMedia → applyRenderOverrides calls setDefault key by key, then checks them
-// all), and nothing undoes them. The next scene loaded into the same App is then refused for the
-// earlier scene's value: "absorber.gltf: node "soot" ...render.slices: slices: 999 is outside [4, 32]".
+// A scene refused for its render overrides must leave none of the values it set before the failing
+// check in Settings (applyRenderOverrides sets key by key, then checks them all): otherwise the next
+// scene loaded into the same App is refused for the earlier scene's value.
 TEST_F(MediaPluginTest, ARefusedSceneLeavesNoRenderSettingBehind) {
     const auto good = assets::loadScene(mediaTestScene("absorber"));
     nlohmann::json bad;
@@ -261,6 +263,46 @@ TEST_F(MediaPluginTest, ARefusedSceneLeavesNoRenderSettingBehind) {
     EXPECT_FALSE(app.resource<Settings>().has("slices")) << "render.slices of the refused scene was kept";
     EXPECT_NO_THROW(scene::spawnScene(world(), std::make_shared<const assets::Scene>(good)));
     EXPECT_NO_THROW(app.update());
+}
+
+// The scene format's render block (docs/scene-format.schema.json) names exactly the settings the
+// App declares, so a scene can set every one and nothing else.
+TEST_F(MediaPluginTest, TheSchemaNamesEveryDeclaredSetting) {
+    std::ifstream in(NIMBUS_DOCS_DIR "/scene-format.schema.json");
+    ASSERT_TRUE(in);
+    const nlohmann::json schema = nlohmann::json::parse(in);
+    std::set<std::string> documented, declared;
+    for (const auto& [key, value] : schema["$defs"]["render"]["properties"].items()) documented.insert(key);
+    for (const Settings::Declaration& d : app.resource<Settings>().declarations()) declared.insert(d.key);
+    EXPECT_EQ(documented, declared);
+}
+
+// Every tier's preset names declared settings with values their parsers accept, and picks the
+// lighting the tier promises.
+TEST_F(MediaPluginTest, EveryQualityPresetParses) {
+    const std::map<std::string, ParticleLighting> lighting = {
+        {"fast", ParticleLighting::Particle}, {"balanced", ParticleLighting::ParticleExact}, {"exact", ParticleLighting::Fragment}};
+    EXPECT_EQ(app.resource<Settings>().presetValues("quality"), (std::vector<std::string>{"fast", "balanced", "exact"}));
+    for (const auto& [name, expected] : lighting) {
+        Settings settings = app.resource<Settings>();
+        settings.set("quality", name);
+        MediaRenderSettings parsed;
+        ASSERT_NO_THROW(parsed = readMediaSettings(&settings)) << name;
+        EXPECT_EQ(parsed.lighting, expected) << name;
+        EXPECT_EQ(parsed.mode, MediaMode::Particles) << name << ": a tier keeps the mode";
+    }
+}
+
+TEST_F(MediaPluginTest, AnUnknownQualityIsRefusedNamingWhereItWasSet) {
+    Settings settings = app.resource<Settings>();
+    settings.set("quality", "turbo", "scene.gltf: node \"fog\": render.quality");
+    try {
+        (void)readMediaSettings(&settings);
+        FAIL() << "quality=turbo was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("render.quality"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("fast, balanced, exact"), std::string::npos) << e.what();
+    }
 }
 
 void expectBitIdentical(const ParticleSet& a, const ParticleSet& b, const std::string& what_) {

@@ -13,7 +13,7 @@ class Settings {
 public:
     struct Declaration {
         std::string key;
-        std::string help;  // what it does and its default, for `sandbox render --help-settings`
+        std::string help;  // what it does and its default, for `sandbox settings`
     };
 
     // Declaring a key twice is harmless (the first help text stays).
