@@ -226,7 +226,7 @@ def main(bench_dir, docs_dir):
     if "scaling" in runs:
         lines += ["## Scaling with particle count and resolution", "",
                   "A synthetic cloud in content/scenes/cumulus.gltf's media bounds, constant optical depth, 5 timed frames each "
-                  "(a setting is skipped when the 10× smaller cloud already took over 4 s). `particles` is the exact tier, "
+                  "(a setting is skipped when the 10× smaller cloud already took over 0.5 s). `particles` is the exact tier, "
                   "`fast` the fast tier; each cell gives the frame time and its multiple of the splat floor.", "",
                   scaling_section(runs["scaling"])]
     ref_path = os.path.join(bench_dir, "reference.json")
