@@ -61,7 +61,10 @@ float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi,
     float mid = 0.5 * (phi0 + phi1), half_ = 0.5 * (phi1 - phi0);
     float k = KERNEL_FALLOFF / (radius * radius), sum = 0.0;
     float entry = kernelSegment(beta, lo / radius);
-    for (int j = 0; j < (near ? LAMP_NODES : 0); ++j) {  // a loop, so llvmpipe skips it where no lane is near
+    // A loop, so llvmpipe leaves it after one pass where no lane is near (an if runs under a mask
+    // whatever the lanes); do-while, as a for loop's test costs one more masked pass.
+    int j = 0;
+    do {
         float u = uLamp + b * tan(mid + half_ * kLampNodes[j]);
         vec3 x = origin + dir * (tc + u);
         float phase = phaseValue(vPhase.x, vPhase.y, normalize(lamp - x), dir);
@@ -69,7 +72,7 @@ float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi,
         // Near the lamp its light comes from within about its distance, not from the whole kernel.
         float visibility = lights[light].spot.z >= 0.0 ? meshVisibilityTap(light, x, 0.1 * distance(x, lamp)) : 1.0;
         sum += kLampWeights[j] * exp(-k * u * u - inFront - mediumOpticalDepth(light, x)) * phase * lightShape(light, x) * visibility;
-    }
+    } while (++j < (near ? LAMP_NODES : 0));  // sum is read only where near
     if (near) return vSigma * exp(-k * (radius * radius * beta * beta)) * sum * half_ / (b * alpha);
     vec3 toP = lamp - p;
     float d2 = max(dot(toP, toP), 1e-12);
@@ -110,10 +113,12 @@ void main() {
     float h = sqrt(max(radius * radius - dot(perp, perp), 0.0));
     float lo = max(-h, -tc), hi = min(h, tSurface - tc);
     vec3 p = origin + dir * (tc - vSun.a);
-    for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k) {
+    // The lamps are listed first (this variant has at least one): as many passes as lamps.
+    int k = 0;
+    do {
         int light = uFragmentLamps[k];
-        if (light >= 0) source += vAlbedo * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, beta, alpha, p);
-    }
+        source += vAlbedo * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, beta, alpha, p);
+    } while (++k < MAX_FRAGMENT_LAMPS && uFragmentLamps[min(k, MAX_FRAGMENT_LAMPS - 1)] >= 0);
 #endif
     outColor = vec4(source * alpha, alpha);
 }
