@@ -1,5 +1,5 @@
-// Blocks mode, camera side: the view impostors of every block, then the blocks composited back to
-// front over their screen rectangles (shaders/media/block_composite.*).
+// Blocks mode, camera side: the blocks composited back to front over their screen rectangles from
+// the camera's impostor atlas (block_impostor_pass.cpp), shaders/media/block_composite.*.
 #include "block_passes.h"
 
 #include <algorithm>
@@ -167,38 +167,22 @@ BlockCompositePass::BlockCompositePass() { programs(kBlockPlain); }
 
 LocalLightPrograms& BlockCompositePass::programs(std::uint8_t build) {
     std::unique_ptr<LocalLightPrograms>& programs = programs_[build & 7];
-    if (!programs) {
-        gpu::ProgramDesc desc{.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"};
-        if (build & kBlockExactCut) desc.defines.push_back("BLOCK_EXACT_CUT");
-        if (build & kBlockOwnParticles) desc.defines.push_back("BLOCK_OWN_PARTICLES");
-        if (build & kBlockExactShading) desc.defines.push_back("BLOCK_EXACT_SHADING");
-        programs = std::make_unique<LocalLightPrograms>(std::move(desc));
-    }
+    if (!programs) programs = std::make_unique<LocalLightPrograms>(blockCompositeDesc(build));
     return *programs;
 }
 
-render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
+gpu::ProgramDesc blockCompositeDesc(std::uint8_t build) {
+    gpu::ProgramDesc desc{.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"};
+    if (build & kBlockExactCut) desc.defines.push_back("BLOCK_EXACT_CUT");
+    if (build & kBlockOwnParticles) desc.defines.push_back("BLOCK_OWN_PARTICLES");
+    if (build & kBlockExactShading) desc.defines.push_back("BLOCK_EXACT_SHADING");
+    return desc;
+}
+
+render::ResourceHandle BlockCompositePass::add(render::FrameGraph& graph, render::FrameContext& context, const BlockImpostorAtlas& made,
                                                const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
                                                bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
-                                               const BlockImpostorRenderer& impostors, const MediaTarget& target) {
-    struct Impostors {
-        render::ResourceHandle depths, sums1, sums2, moments;
-    };
-    const glm::ivec2 atlas = plan.atlasSize;
-    const auto& made = graph.addPass<Impostors>(
-        "block_impostors",
-        [&](render::PassBuilder& builder, Impostors& d) {
-            d.depths = builder.create("block_impostor_depths", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
-            d.sums1 = builder.create("block_impostor_sums1", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
-            d.sums2 = builder.create("block_impostor_sums2", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
-            d.moments = builder.create("block_impostor_moments", {GL_TEXTURE_2D, GL_RG32F, atlas.x, atlas.y, 1, 1});
-        },
-        [&plan, &blocks, &particles, &impostors](const render::PassResources& r, const Impostors& d) {
-            impostors.render(plan, 0,
-                             {.depths = r.id(d.depths), .sums1 = r.id(d.sums1), .sums2 = r.id(d.sums2), .moments = r.id(d.moments)},
-                             blocks, particles);
-        });
-
+                                               const MediaTarget& target) {
     struct Composite {
         render::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments, seamMask, seamStencil;
     };

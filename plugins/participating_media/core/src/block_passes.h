@@ -95,6 +95,14 @@ private:
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 
+// The camera's impostor atlas as frame-graph resources (the `block_impostors` pass).
+struct BlockImpostorAtlas {
+    render::ResourceHandle depths, sums1, sums2, moments;
+};
+// Adds the `block_impostors` pass: the camera's plan (tile set 0 of `blocks`) rendered into a new atlas.
+BlockImpostorAtlas addBlockImpostorPass(render::FrameGraph& graph, const BlockViewPlan& plan, const BlockGpuBuffers& blocks,
+                                        const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors);
+
 // A mesh instance's bounds in world space: its local box carried by the instance's rotation and
 // scale (a wing tilted through a cloud has an axis-aligned box as big as the cloud), or, where the
 // transform shears, the axis-aligned box around that.
@@ -192,6 +200,9 @@ private:
 };
 
 // Camera: impostors into an atlas, then blocks composited back to front into the media target.
+// The composite program (block_composite.*) for a BlockCompositeBuild.
+gpu::ProgramDesc blockCompositeDesc(std::uint8_t build);
+
 class BlockCompositePass {
 public:
     BlockCompositePass();
@@ -199,10 +210,10 @@ public:
     // `seamOnly` (block_shading=seam): the BLOCK_EXACT_SHADING blocks are shaded exactly only near the
     // texels where a mesh lies among the particles of the blocks a mesh comes near (BlockSeamMaskPass),
     // and smoothly elsewhere, blended over a mask cell (block_seam.glsl seamWeight).
-    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const BlockViewPlan& plan,
+    render::ResourceHandle add(render::FrameGraph& graph, render::FrameContext& context, const BlockImpostorAtlas& atlas,
                                const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
                                bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
-                               const BlockImpostorRenderer& impostors, const MediaTarget& target);
+                               const MediaTarget& target);
 
 private:
     LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for

@@ -24,7 +24,7 @@ render::ResourceHandle BlockSlicePass::add(render::FrameGraph& graph, const std:
         std::vector<render::ResourceHandle> impostors, moments;  // one atlas per view: none is rewritten while queued draws read it
     };
     const auto& data = graph.addPass<Data>(
-        "light_slices",
+        "block_light_slices",
         [&](render::PassBuilder& builder, Data& d) {
             d.slices = builder.create("light_slices", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1});
             for (std::size_t i = 0; i < plans.size(); ++i) {

@@ -8,12 +8,13 @@ LocalLightPrograms::LocalLightPrograms(gpu::ProgramDesc desc) : desc_(std::move(
 
 const gpu::Program& LocalLightPrograms::forLights(const std::vector<assets::ResolvedLight>& lights) {
     if (!anyLamp(lights)) return sunOnly_;
-    if (!localLights_) {
-        gpu::ProgramDesc withLamps = desc_;
-        withLamps.defines.push_back("MEDIA_LOCAL_LIGHTS");
-        localLights_ = gpu::compileProgram(withLamps);
-    }
+    if (!localLights_) localLights_ = gpu::compileProgram(withLocalLights(desc_));
     return localLights_;
+}
+
+gpu::ProgramDesc LocalLightPrograms::withLocalLights(gpu::ProgramDesc desc) {
+    desc.defines.push_back("MEDIA_LOCAL_LIGHTS");
+    return desc;
 }
 
 }  // namespace nimbus::media

@@ -18,6 +18,8 @@ public:
     explicit LocalLightPrograms(gpu::ProgramDesc desc);
     // The build for a frame lit by `lights`.
     const gpu::Program& forLights(const std::vector<assets::ResolvedLight>& lights);
+    // `desc` as the lamp build compiles it.
+    static gpu::ProgramDesc withLocalLights(gpu::ProgramDesc desc);
 
 private:
     gpu::ProgramDesc desc_;

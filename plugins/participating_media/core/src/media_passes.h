@@ -95,6 +95,9 @@ struct ParticleShading {
 };
 
 // `particles` mode: sorted soft billboards into the media target (rgb in-scatter, a transmittance).
+// The exact particles program (particles.*), with the light integrated over each particle or taken at one point.
+gpu::ProgramDesc particlesDesc(bool layerLight);
+
 class ParticlePass {
 public:
     ParticlePass();
@@ -122,6 +125,9 @@ FragmentLamps fragmentLamps(const std::vector<assets::ResolvedLight>& lights);
 // Per-particle lighting (the fast tiers): each particle's source fitted over its billboard, in draw
 // order, from nine rays through it (`exact`: each shaded as particles.frag shades a pixel;
 // `constant`: the centre ray alone, for particles a few pixels wide).
+// The per-particle lighting program (particle_lighting.comp): balanced's exact chord integrals, one ray per particle.
+gpu::ProgramDesc particleLightingDesc(bool exact, bool constant);
+
 class ParticleLightingPass {
 public:
     ParticleLightingPass();
@@ -138,6 +144,9 @@ private:
 
 // Fast particles: the sorted billboards with per-vertex source and per-fragment opacity from the
 // pre-integrated kernel table. `eyeInside`: some particle contains the eye (its segment starts there).
+// The splat program (particle_splats.*): eye inside the medium, lamps per fragment, one ray per particle.
+gpu::ProgramDesc particleSplatDesc(bool eyeInside, bool lamps, bool constant);
+
 class ParticleSplatPass {
 public:
     ParticleSplatPass();

@@ -302,8 +302,9 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
                 frame.orderNeighbours = overlappingBlockLists(frame.partition, frame.backToFront);
             stats_.exactlyShadedBlocks = static_cast<int>(std::count(exact.begin(), exact.end(), std::uint8_t{1}));
         }
-        media = blockCompositePass_->add(graph, context, frame.cameraPlan, frame.backToFront, builds,
-                                         settings_.blockShading == BlockShading::Seam, *blockBuffers_, *buffer_, *impostorRenderer_, target);
+        const BlockImpostorAtlas atlas = addBlockImpostorPass(graph, frame.cameraPlan, *blockBuffers_, *buffer_, *impostorRenderer_);
+        media = blockCompositePass_->add(graph, context, atlas, frame.backToFront, builds, settings_.blockShading == BlockShading::Seam,
+                                         *blockBuffers_, *buffer_, target);
     } else if (settings_.mode == MediaMode::Billboards) {
         if (!billboardPass_) billboardPass_ = std::make_unique<BillboardPass>();
         media = billboardPass_->add(graph, context, *buffer_, target);

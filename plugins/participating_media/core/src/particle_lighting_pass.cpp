@@ -1,5 +1,5 @@
 // Per-particle lighting (fast and balanced tiers): one compute invocation per particle, in draw
-// order, evaluates its source at five rays through its billboard (shaders/media/particle_lighting.comp)
+// order, evaluates its source at nine rays through its billboard (shaders/media/particle_lighting.comp)
 // into a buffer the splats read per vertex. Fragments then pay for opacity only.
 #include <algorithm>
 
@@ -22,13 +22,15 @@ ParticleLightingPass::ParticleLightingPass() = default;
 
 const gpu::Program& ParticleLightingPass::program(const std::vector<assets::ResolvedLight>& lights, bool exact, bool constant) {
     std::unique_ptr<LocalLightPrograms>& p = programs_[(exact ? 1 : 0) + (constant ? 2 : 0)];
-    if (!p) {
-        gpu::ProgramDesc desc{.compute = "media/particle_lighting.comp"};
-        if (exact) desc.defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"};
-        if (constant) desc.defines.push_back("SPLAT_CONSTANT");
-        p = std::make_unique<LocalLightPrograms>(desc);
-    }
+    if (!p) p = std::make_unique<LocalLightPrograms>(particleLightingDesc(exact, constant));
     return p->forLights(lights);
+}
+
+gpu::ProgramDesc particleLightingDesc(bool exact, bool constant) {
+    gpu::ProgramDesc desc{.compute = "media/particle_lighting.comp"};
+    if (exact) desc.defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"};
+    if (constant) desc.defines.push_back("SPLAT_CONSTANT");
+    return desc;
 }
 
 void ParticleLightingPass::add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,

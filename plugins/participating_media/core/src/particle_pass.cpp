@@ -10,8 +10,13 @@ namespace nimbus::media {
 
 inline constexpr GLuint kShadowDepthUnit = 4;
 
-ParticlePass::ParticlePass()
-    : layerLight_({.vertex = "media/particles.vert", .fragment = "media/particles.frag", .defines = {"MEDIA_LAYER_LIGHT"}}) {}
+ParticlePass::ParticlePass() : layerLight_(particlesDesc(true)) {}
+
+gpu::ProgramDesc particlesDesc(bool layerLight) {
+    gpu::ProgramDesc desc{.vertex = "media/particles.vert", .fragment = "media/particles.frag"};
+    if (layerLight) desc.defines.push_back("MEDIA_LAYER_LIGHT");
+    return desc;
+}
 
 render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::FrameContext& context,
                                          const ParticleGpuBuffer& buffer, ParticleShading shading, const MediaTarget& target) {
@@ -20,7 +25,7 @@ render::ResourceHandle ParticlePass::add(render::FrameGraph& graph, render::Fram
     };
     const int w = target.size.x, h = target.size.y;
     if (!shading.layerLight && !pointLight_)
-        pointLight_ = std::make_unique<LocalLightPrograms>(gpu::ProgramDesc{.vertex = "media/particles.vert", .fragment = "media/particles.frag"});
+        pointLight_ = std::make_unique<LocalLightPrograms>(particlesDesc(false));
     const gpu::Program& program = (shading.layerLight ? layerLight_ : *pointLight_).forLights(context.input.lights);
     const auto& data = graph.addPass<Data>(
         "media_particles",

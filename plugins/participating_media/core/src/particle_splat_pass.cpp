@@ -20,14 +20,16 @@ ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 
 const gpu::Program& ParticleSplatPass::program(bool eyeInside, bool lamps, bool constant) {
     gpu::Program& p = programs_[(eyeInside ? 1 : 0) + (lamps ? 2 : 0) + (constant ? 4 : 0)];
-    if (!p) {
-        gpu::ProgramDesc desc{.vertex = "media/particle_splats.vert", .fragment = "media/particle_splats.frag"};
-        if (eyeInside) desc.defines.push_back("MEDIA_EYE_INSIDE");
-        if (lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
-        if (constant) desc.defines.push_back("SPLAT_CONSTANT");
-        p = gpu::compileProgram(desc);
-    }
+    if (!p) p = gpu::compileProgram(particleSplatDesc(eyeInside, lamps, constant));
     return p;
+}
+
+gpu::ProgramDesc particleSplatDesc(bool eyeInside, bool lamps, bool constant) {
+    gpu::ProgramDesc desc{.vertex = "media/particle_splats.vert", .fragment = "media/particle_splats.frag"};
+    if (eyeInside) desc.defines.push_back("MEDIA_EYE_INSIDE");
+    if (lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
+    if (constant) desc.defines.push_back("SPLAT_CONSTANT");
+    return desc;
 }
 
 render::ResourceHandle ParticleSplatPass::add(render::FrameGraph& graph, render::FrameContext& context, const ParticleGpuBuffer& buffer,
