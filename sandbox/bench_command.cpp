@@ -2,7 +2,7 @@
 // DESIGN.md §6: renders the reference once, then sweeps the settings that trade speed for error
 // (modes, slices, blocks, impostor resolution, instancing, media scale), measuring each one's
 // frame time (median of N GPU-synchronised frames, per pass), its error against the reference, and
-// the fill-rate floor for the pixels its media passes covered. --scaling adds a sweep of particle
+// the splat floor (every particle's billboard blended once). --scaling adds a sweep of particle
 // count (1k → 1M, a synthetic cloud in the scene's media bounds) and resolution, timed only.
 #include <chrono>
 #include <cmath>
@@ -185,7 +185,7 @@ int run(const BenchOptions& o) {
 
 CommandRunner addBenchCommand(CLI::App& app) {
     auto options = std::make_shared<BenchOptions>();
-    auto* cmd = app.add_subcommand("bench", "sweep settings: frame time against error, with the fill-rate floor");
+    auto* cmd = app.add_subcommand("bench", "sweep settings: frame time against error, with the splat floor");
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--out", options->out, "output folder")->capture_default_str();
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();

@@ -7,14 +7,6 @@
 namespace nimbus::render {
 
 void GlPassTimer::begin(std::string_view) {
-    if (countFragments_) {
-        if (!query_) {
-            GLuint name = 0;
-            glCreateQueries(GL_SAMPLES_PASSED, 1, &name);
-            query_ = gpu::Query(name);
-        }
-        glBeginQuery(GL_SAMPLES_PASSED, query_.id());
-    }
     glFinish();
     start_ = std::chrono::steady_clock::now();
 }
@@ -23,12 +15,6 @@ void GlPassTimer::end(std::string_view pass) {
     glFinish();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
     samples_[std::string(pass)].push_back(ms);
-    if (countFragments_) {
-        glEndQuery(GL_SAMPLES_PASSED);
-        GLuint64 count = 0;
-        glGetQueryObjectui64v(query_.id(), GL_QUERY_RESULT, &count);
-        fragments_[std::string(pass)].push_back(count);
-    }
 }
 
 double median(std::vector<double> values) {
