@@ -113,7 +113,7 @@ def tiers_section(runs, bench_dir):
             "fragment; per fragment otherwise one kernel-table fetch. Falls back to `exact` in frames where a lamp sits "
             "inside a dense particle (`exact_near_lamps`).",
             "- `fast`: as balanced with cheaper light (one table fetch per ray), slices deposited in O(N) fill, automatic "
-            "slice resolution, half-resolution media where particles cover the image more than 2.5 times over, "
+            "slice resolution, media at ¼ to ½ resolution where particles cover the image more than 2.5 times over, "
             "and cheaper mesh shadows.",
             "- `billboards`: not a tier but the yardstick of what a typical engine ships: sorted sprites lit once per "
             "particle, no volumetric or mesh shadows, a soft-particle fade, one fetch per fragment.", "",

@@ -1,6 +1,7 @@
 #include "nimbus/media/media_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "block_passes.h"
@@ -57,23 +58,32 @@ assets::Aabb particleBounds(const ParticleSet& particles) {
     return bounds;
 }
 
-double splatCoverage(const ParticleSet& particles, const render::View& view) {
+SplatFootprint splatFootprint(const ParticleSet& particles, const render::View& view) {
     const double pixels = static_cast<double>(view.width) * view.height;
     const glm::dmat4 viewMatrix(view.view);
     // Pixels per metre at depth 1 (perspective) or per metre (orthographic), vertically.
     const double scale = view.height / (2.0 * (view.orthographic ? view.orthoHalfExtent.y : view.tanHalfFovY));
-    double covered = 0.0;
+    double covered = 0.0, radiusTimesArea = 0.0;
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const glm::dvec3 c(viewMatrix * glm::dvec4(particles.position[i] - view.origin, 1.0));
         const double r = particles.radius[i], depth = -c.z;
         if (!view.orthographic && depth <= r) {
             covered += pixels;  // in front of or around the eye: a full-screen quad
+            radiusTimesArea += pixels * std::sqrt(pixels);
             continue;
         }
         const double half = r * scale / (view.orthographic ? 1.0 : depth);  // the quad's half size in pixels
-        covered += std::min(4.0 * half * half, pixels);
+        const double area = std::min(4.0 * half * half, pixels);
+        covered += area;
+        radiusTimesArea += area * half;
     }
-    return covered / pixels;
+    return {covered / pixels, covered > 0.0 ? radiusTimesArea / covered : 0.0};
+}
+
+float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles) {
+    // A lamp among the particles lights a peak a few pixels wide, which a lower resolution blurs away.
+    if (footprint.coverage <= kHalfScaleCoverage || lampAmongParticles) return 1.0f;
+    return static_cast<float>(std::clamp(kAutoScaleRadiusTexels / footprint.radiusPixels, 0.25, 0.5));
 }
 
 bool lampAmongParticles(const std::vector<assets::ResolvedLight>& lights, const assets::Aabb& bounds) {
@@ -259,9 +269,9 @@ void MediaRenderer::afterOpaque(render::FrameGraph& graph, render::FrameContext&
     if (particles_ == nullptr || particles_->empty()) return;
     const render::View& v = context.view;
     float scale = settings_.mediaScale > 0.0f ? std::min(settings_.mediaScale, 1.0f) : 1.0f;
-    // A lamp among the particles lights a peak a few pixels wide, which half resolution blurs away.
-    const double coverage = splatCoverage(*particles_, v);
-    if (settings_.mediaScaleAuto) scale = coverage > kHalfScaleCoverage && !lampAmongParticles(context.input.lights, bounds_) ? 0.5f : 1.0f;
+    const SplatFootprint footprint = splatFootprint(*particles_, v);
+    const double coverage = footprint.coverage;
+    if (settings_.mediaScaleAuto) scale = automaticMediaScale(footprint, lampAmongParticles(context.input.lights, bounds_));
     stats_.mediaScale = scale;
     MediaTarget target;
     target.size = glm::max(glm::ivec2(glm::round(glm::vec2(v.width, v.height) * scale)), glm::ivec2(1));

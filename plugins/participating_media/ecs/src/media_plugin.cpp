@@ -214,7 +214,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
     settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)), more in optically thick media or around a lamp inside them)");
     settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
-    settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25, or auto (0.5 where the particles cover the image more than 2.5 times over); default 1");
+    settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25, or auto (where the particles cover the image more than 2.5 times over, 1/4 to 1/2 keeping 8 texels across a typical billboard); default 1");
     settings.declare("instancing", "blocks mode: build the cloud from one block prototype instanced at every block (default off)");
     settings.declare("block_shading", "blocks mode, where a mesh is seen in the medium: seam (default: blocks shaded from their particles with the compositing order corrected near the mesh), smooth (faster there, but the mesh can show a seam) or exact (as seam over those blocks' whole rectangles; slowest)");
     settings.declare("upsample_threshold", "offscreen media: relative depth difference treated as an edge (default 0.2)");
