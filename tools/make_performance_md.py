@@ -120,7 +120,7 @@ def tiers_section(runs, bench_dir):
             "### Every content scene at 1280×720", "",
             "One `sandbox bench` run per scene, the rows side by side; error is rel-RMSE against the reference of the same frame. "
             "Each row's multiple is of the floor measured right after its own frames; the floor column is the median of "
-            "the rows' (llvmpipe's timings move by up to ±30%% between runs on this shared machine).", "",
+            "the rows' (llvmpipe's timings move by up to ±30% between runs on this shared machine).", "",
             "| scene | particles | splat floor ms | " + " | ".join("%s ms (× floor, error)" % t for t, _ in TIERS) +
             " | exact / balanced | exact / fast |",
             "|---|---:|---:|" + "---:|" * len(TIERS) + "---:|---:|"]
@@ -228,7 +228,7 @@ def main(bench_dir, docs_dir):
     if "scaling" in runs:
         lines += ["## Scaling with particle count and resolution", "",
                   "A synthetic cloud in content/scenes/cumulus.gltf's media bounds, constant optical depth, 5 timed frames each "
-                  "(a setting is skipped when the 10× smaller cloud already took over 0.5 s). `particles` is the exact tier, "
+                  "(a setting is skipped when the 10× smaller cloud already took over 0.8 s). `particles` is the exact tier, "
                   "`fast` the fast tier; each cell gives the frame time and its multiple of the splat floor.", "",
                   scaling_section(runs["scaling"])]
     budget_path = os.path.join(bench_dir, "budget.json")
