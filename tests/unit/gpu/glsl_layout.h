@@ -18,14 +18,18 @@ struct MemberOffset {
     std::size_t offset;
 };
 
-// GL_OFFSET of an active uniform or buffer variable (`interface` GL_UNIFORM or GL_BUFFER_VARIABLE); −1 if inactive.
-inline GLint resourceOffset(GLuint program, GLenum interface, const std::string& name) {
+// One integer property of a named program resource; −1 where GL knows no such resource.
+inline GLint resourceProperty(GLuint program, GLenum interface, const std::string& name, GLenum property) {
     const GLuint index = glGetProgramResourceIndex(program, interface, name.c_str());
     if (index == GL_INVALID_INDEX) return -1;
-    const GLenum property = GL_OFFSET;
-    GLint offset = -1;
-    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &offset);
-    return offset;
+    GLint value = -1;
+    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &value);
+    return value;
+}
+
+// GL_OFFSET of an active uniform or buffer variable (`interface` GL_UNIFORM or GL_BUFFER_VARIABLE); −1 if inactive.
+inline GLint resourceOffset(GLuint program, GLenum interface, const std::string& name) {
+    return resourceProperty(program, interface, name, GL_OFFSET);
 }
 
 // The names of active variables of `interface` starting with `prefix`, with the prefix removed.
@@ -57,22 +61,12 @@ inline void expectMembers(GLuint program, GLenum interface, const std::string& p
 
 // The size GL gives a uniform or shader storage block (`interface` GL_UNIFORM_BLOCK or GL_SHADER_STORAGE_BLOCK).
 inline GLint blockSize(GLuint program, GLenum interface, const std::string& block) {
-    const GLuint index = glGetProgramResourceIndex(program, interface, block.c_str());
-    if (index == GL_INVALID_INDEX) return -1;
-    const GLenum property = GL_BUFFER_DATA_SIZE;
-    GLint size = -1;
-    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &size);
-    return size;
+    return resourceProperty(program, interface, block, GL_BUFFER_DATA_SIZE);
 }
 
 // The stride of an unsized (or top-level) array of structs in a shader storage block, read at one member.
 inline GLint topLevelArrayStride(GLuint program, const std::string& member) {
-    const GLuint index = glGetProgramResourceIndex(program, GL_BUFFER_VARIABLE, member.c_str());
-    if (index == GL_INVALID_INDEX) return -1;
-    const GLenum property = GL_TOP_LEVEL_ARRAY_STRIDE;
-    GLint stride = -1;
-    glGetProgramResourceiv(program, GL_BUFFER_VARIABLE, index, 1, &property, 1, nullptr, &stride);
-    return stride;
+    return resourceProperty(program, GL_BUFFER_VARIABLE, member, GL_TOP_LEVEL_ARRAY_STRIDE);
 }
 
 }  // namespace nimbus::gpu::test

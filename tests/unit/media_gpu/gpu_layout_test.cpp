@@ -19,12 +19,7 @@ using gpu::test::topLevelArrayStride;
 class MediaGpuLayout : public gpu::test::GlTest {};
 
 GLint storageBinding(GLuint program, const char* block) {
-    const GLuint index = glGetProgramResourceIndex(program, GL_SHADER_STORAGE_BLOCK, block);
-    if (index == GL_INVALID_INDEX) return -1;
-    const GLenum property = GL_BUFFER_BINDING;
-    GLint binding = -1;
-    glGetProgramResourceiv(program, GL_SHADER_STORAGE_BLOCK, index, 1, &property, 1, nullptr, &binding);
-    return binding;
+    return gpu::test::resourceProperty(program, GL_SHADER_STORAGE_BLOCK, block, GL_BUFFER_BINDING);
 }
 
 TEST_F(MediaGpuLayout, ParticlesMatchGpuParticle) {
