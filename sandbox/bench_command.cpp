@@ -23,7 +23,7 @@
 #include "nimbus/media/block_partition.h"
 #include "nimbus/media/ecs/media_plugin.h"
 #include "nimbus/media/media_renderer.h"
-#include "nimbus/render/pass_timer.h"
+#include "nimbus/gpu/pass_timer.h"
 #include "nimbus/render/render_plugin.h"
 #include "nimbus/scene/scene_plugin.h"
 #include "session.h"
@@ -105,11 +105,12 @@ nlohmann::json runScaling(Session& session, const media::ParticleSet& sceneParti
                 render::readRenderSettings(tierSettings, settings);
                 settings.width = sizes[s].x;
                 settings.height = sizes[s].y;
-                media::MediaRenderer medium;  // the core used directly, as any host would
+                media::MediaRenderer medium;  // the core through the host contract, without the ECS
+                media::MediaRenderExtension extension(medium);
                 medium.prepare(cloud, media::ecs::readMediaSettings(&tierSettings));
                 render::FrameInput input = render::gatherFrameInput(app.world(), settings, "", medium.bounds());
                 input.gpuScene = state.gpuScene.get();
-                render::RenderExtension* extensions[] = {&medium};
+                render::RenderExtension* extensions[] = {&extension};
                 state.renderer->render(input, settings, extensions);  // warm-up
                 std::vector<double> ms;
                 for (int f = 0; f < frames; ++f) {
@@ -119,7 +120,7 @@ nlohmann::json runScaling(Session& session, const media::ParticleSet& sceneParti
                     glFinish();
                     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
                 }
-                lastMs[key] = render::median(ms);
+                lastMs[key] = gpu::median(ms);
                 row["frame_ms"] = lastMs[key];
                 row["splat_floor_ms"] = medium.measureSplatFloor(render::makeView(input.camera, settings.width, settings.height), frames);
                 row["frames"] = frames;
@@ -151,7 +152,7 @@ int run(const BenchOptions& o) {
     const auto reference = makeReferenceScene(*session, "", width, height);
     run.particles = reference->particles.size();
     // Every --only names a setting of the sweep, checked before the reference's minutes are spent.
-    std::vector<BenchConfig> configs = standardSweep(reference->particles, media::lampPositions(reference->inputs.lights));
+    std::vector<BenchConfig> configs = standardSweep(reference->particles, media::lampPositions(render::punctualLights(reference->inputs.lights)));
     for (const std::string& name : o.only)
         if (std::none_of(configs.begin(), configs.end(), [&](const BenchConfig& c) { return c.name == name; }))
             throwInputError("--only", name, "", "matches no setting of the sweep");

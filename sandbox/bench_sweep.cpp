@@ -9,7 +9,7 @@
 #include "nimbus/base/settings.h"
 #include "nimbus/media/block_partition.h"
 #include "nimbus/media/ecs/media_plugin.h"
-#include "nimbus/render/pass_timer.h"
+#include "nimbus/gpu/pass_timer.h"
 #include "nimbus/render/render_plugin.h"
 
 namespace nimbus::sandbox {
@@ -106,15 +106,15 @@ std::vector<BenchResult> runSweep(Session& session, const std::vector<BenchConfi
             glFinish();
             frames.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
-        r.frameMs = render::median(frames);
+        r.frameMs = gpu::median(frames);
         r.floorMs = splatFloor(app, width, height, timing.frames);  // right after the timed frames
 
-        render::GlPassTimer timer;
+        gpu::GlPassTimer timer;
         request.timer = &timer;
         for (int i = 0; i < timing.frames; ++i) renderFrame(app);
         request.timer = nullptr;
         for (const auto& [pass, samples] : timer.samples()) {
-            r.passMs[pass] = render::median(samples);
+            r.passMs[pass] = gpu::median(samples);
             if (isMediaPass(pass)) r.mediaMs += r.passMs[pass];
         }
 

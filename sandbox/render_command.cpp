@@ -19,7 +19,7 @@
 #include "nimbus/base/settings.h"
 #include "nimbus/gpu/context.h"
 #include "nimbus/media/ecs/media_plugin.h"
-#include "nimbus/render/pass_timer.h"
+#include "nimbus/gpu/pass_timer.h"
 #include "nimbus/render/render_plugin.h"
 #include "frame_budget_walk.h"
 #include "session.h"
@@ -99,13 +99,13 @@ int run(const RenderOptions& o) {
             glFinish();
             frames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         }
-        render::GlPassTimer timer;
+        gpu::GlPassTimer timer;
         request.timer = &timer;
         for (int i = 0; i < o.frames; ++i) renderFrame(app);
         request.timer = nullptr;
         nlohmann::json passes = nlohmann::json::object();
-        for (const auto& [name, samples] : timer.samples()) passes[name] = render::median(samples);
-        stats["frame_ms"] = render::median(frames);
+        for (const auto& [name, samples] : timer.samples()) passes[name] = gpu::median(samples);
+        stats["frame_ms"] = gpu::median(frames);
         stats["frame_ms_min"] = *std::min_element(frames.begin(), frames.end());
         stats["frames"] = o.frames;
         stats["passes_ms"] = passes;

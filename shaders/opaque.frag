@@ -1,12 +1,16 @@
 #version 450 core
 // Lambert shading of DESIGN.md §4: L_s = baseColor/π · Σ E_l max(0, n·l) V_mesh T_l + baseColor · L_amb.
-// V_mesh from the mesh shadow maps (PCF), T_l = exp(−τ) from the medium's light slices.
+// V_mesh from the mesh shadow maps (PCF), T_l = exp(−τ) from the medium's light slices when an
+// extension provides them (1 otherwise).
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
 #include "common/shadows.glsl"
-#include "common/transmittance.glsl"
+// MEDIA_LIGHT_TRANSMITTANCE: the media plugin's light slices (render::MeshShadingInput).
+#ifdef MEDIA_LIGHT_TRANSMITTANCE
+#include "media/host/light_transmittance.glsl"
+#endif
 
 in vec3 vPosition;
 in vec3 vNormal;
@@ -35,7 +39,10 @@ void main() {
         if (cosine <= 0.0) continue;
         float visibility = meshVisibility(i, vPosition, n);
         if (visibility <= 0.0) continue;
-        float transmittance = exp(-mediumOpticalDepth(i, vPosition));
+        float transmittance = 1.0;
+#ifdef MEDIA_LIGHT_TRANSMITTANCE
+        transmittance = mediaTransmittance(i, lights[i].position.xyz, vPosition);
+#endif
         radiance += base * INV_PI * s.irradiance * (cosine * visibility * transmittance);
     } while (++i < frame.counts.x);
     outRadiance = vec4(radiance, 1.0);

@@ -1,4 +1,4 @@
-// Per-frame camera and environment (render/frame_data.h GpuFrame). Positions are relative to the
+// Per-frame camera and environment (gpu/frame_layout.h GpuFrame). Positions are relative to the
 // camera (the frame origin), so the eye is at (0, 0, 0) for perspective views.
 layout(std140, binding = 0) uniform Frame {
     mat4 viewProjection;
@@ -11,7 +11,7 @@ layout(std140, binding = 0) uniform Frame {
     vec4 viewport;       // width, height, 1/width, 1/height
     vec4 ambient;
     vec4 background;
-    ivec4 counts;        // x: lights, y: transmittance slices present, z: shadow map size, w: PCF radius
+    ivec4 counts;        // x: lights, y: unused, z: shadow map size, w: PCF radius
 } frame;
 
 bool frameOrthographic() { return frame.cameraForward.w > 0.5; }

@@ -1,5 +1,5 @@
-// Views from a light (render/frame_data.h GpuLightView), shared by shadow maps and transmittance slices.
-const int MAX_LIGHT_VIEWS = 384;  // per kind, in one uniform block (render/frame_data.h kMaxLightViews)
+// Views from a light (gpu/frame_layout.h GpuLightView), shared by shadow maps and transmittance slices.
+const int MAX_LIGHT_VIEWS = 384;  // per kind, in one uniform block (gpu/frame_layout.h kMaxLightViews)
 struct GpuLightView {
     mat4 view;
     mat4 viewProjection;

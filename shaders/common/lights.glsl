@@ -1,15 +1,14 @@
-// KHR_lights_punctual lights (render/frame_data.h GpuLight). sampleLight mirrors the CPU definition
+// KHR_lights_punctual lights (gpu/frame_layout.h GpuLight). sampleLight mirrors the CPU definition
 // in assets/light_model.h: inverse square, glTF range window, spot cone (scale/offset form).
 struct GpuLight {
     vec4 position;   // xyz origin-relative, w: range (0 infinite)
     vec4 direction;  // xyz travel direction, w: type 0 directional, 1 point, 2 spot
     vec4 radiance;   // rgb colour × intensity
     vec4 spot;       // x: cone scale, y: cone offset, z: first shadow view, w: shadow view count
-    vec4 media;      // x: first transmittance view, y: view count
 };
 
 // A uniform block, not a storage buffer: llvmpipe loads uniforms 3–4× faster, and every pixel of
-// the opaque pass reads a light and its views (render/frame_data.h kMaxLights).
+// the opaque pass reads a light and its views (gpu/frame_layout.h kMaxLights).
 const int MAX_LIGHTS = 64;
 layout(std140, binding = 1) uniform Lights { GpuLight lights[MAX_LIGHTS]; };
 

@@ -2,11 +2,12 @@
 // `billboards` mode: one sprite fetch (the kernel's column through the sprite's point, from the
 // pre-integrated table) and the classic soft-particle fade against the scene depth (Lorach), over
 // one particle radius.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "media/kernel_table.glsl"
 
-layout(binding = 3) uniform sampler2D uSceneDepth;
+layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(location = 1) uniform vec2 uFullResScale;
 
 in vec2 vCorner;

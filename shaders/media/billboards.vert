@@ -2,6 +2,7 @@
 // `billboards` mode (media/billboard_pass.cpp), the yardstick a typical engine ships: sorted
 // camera-facing sprites lit once per particle, at the vertices, by every light with its phase
 // function; no medium transmittance and no mesh shadows on the particles.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
@@ -9,7 +10,7 @@
 #include "media/particle_data.glsl"
 #include "media/billboard.glsl"
 
-layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
+layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 
 out vec2 vCorner;             // the billboard's corner coordinates, [−1, 1]²
 flat out vec4 vSource;        // rgb: J, a: σR

@@ -4,11 +4,12 @@
 // g. Where the opaque surface lies inside the block's [front, back] interval, the optical depth is
 // scaled by the share of its mass in front of it (seed 000 §2.4, with the block's depth profile
 // instead of uniform density), so a mesh crossing a cloud shows no billboard plane.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
-#include "common/transmittance.glsl"
+#include "media/slices.glsl"
 #include "media/optics.glsl"
 #include "media/particle_data.glsl"
 #include "media/lighting.glsl"
@@ -17,12 +18,12 @@
 #include "media/block_order.glsl"
 #include "media/block_seam.glsl"
 
-layout(binding = 3) uniform sampler2D uSceneDepth;
-layout(binding = 5) uniform sampler2D uImpostorDepths;
-layout(binding = 6) uniform sampler2D uImpostorSums1;
-layout(binding = 7) uniform sampler2D uImpostorSums2;
-layout(binding = 8) uniform sampler2D uImpostorMoments;  // τ·mean, τ·(variance + mean²) of the depth along the ray
-layout(binding = 9) uniform sampler2D uSeamMask;         // media/block_seam.glsl; read where uSeamPart is 2
+layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
+layout(binding = MEDIA_IMPOSTOR_DEPTHS_UNIT) uniform sampler2D uImpostorDepths;
+layout(binding = MEDIA_IMPOSTOR_SUMS1_UNIT) uniform sampler2D uImpostorSums1;
+layout(binding = MEDIA_IMPOSTOR_SUMS2_UNIT) uniform sampler2D uImpostorSums2;
+layout(binding = MEDIA_IMPOSTOR_MOMENTS_UNIT) uniform sampler2D uImpostorMoments;  // τ·mean, τ·(variance + mean²) of the depth along the ray
+layout(binding = MEDIA_SEAM_MASK_UNIT) uniform sampler2D uSeamMask;         // media/block_seam.glsl; read where uSeamPart is 2
 
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
 // Which texels this draw shades (block_composite_pass.cpp draws the blocks of a seam twice, once

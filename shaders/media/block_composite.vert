@@ -1,9 +1,10 @@
 #version 450 core
 // Blocks mode (media/block_composite_pass.cpp): one quad per block over its screen rectangle,
 // blocks back to front. The seam mask (block_seam_mask_pass.cpp) draws the same quads, widened.
+#include "media/bindings.glsl"
 #include "media/block_data.glsl"
 
-layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
+layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 
 layout(location = 2) uniform int uFirstRank;  // the draw covers ranks uFirstRank onwards (block_composite_pass.cpp draws runs)
 layout(location = 4) uniform vec2 uRectWidening;  // NDC added on every side of the rectangle (0 unless set)

@@ -1,4 +1,5 @@
 // Blocks of particles (media/block_partition.h) and their impostor tiles (media/impostor_atlas.h).
+#include "media/bindings.glsl"
 struct BlockTile {
     vec4 rect;          // the block's rectangle in the view's NDC: xy min, zw max
     vec4 atlas;         // its tile in the atlas: x, y, width, height in texels (width 0: not drawn)
@@ -9,15 +10,13 @@ struct BlockTile {
     vec4 lampSlices;    // x: 1 when the lamps' slices hold the block's particles one by one, not its light impostor
 };
 
-layout(std430, binding = 6) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)
-layout(std430, binding = 7) readonly buffer BlockTiles { BlockTile blockTiles[]; };
+layout(std430, binding = MEDIA_IMPOSTOR_ITEMS_BINDING) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)
+layout(std430, binding = MEDIA_BLOCK_TILES_BINDING) readonly buffer BlockTiles { BlockTile blockTiles[]; };
 
 // The ray distance a tile's depth moments are taken about: its block centre's distance from the
-// view's eye, or its view depth (orthographic). About the view's eye, E[t²] − E[t]² lost the
-// variance to float rounding wherever a block lies far from the eye compared with its particles'
-// spread (5 m away, 2 mm particles: a third of it), and with it where a ground through the
-// particles cuts their mass. An instance of the prototype has its own centre, so the same moments
-// read about its own origin put it where it is.
+// view's eye, or its view depth (orthographic). About the eye, E[t²] − E[t]² loses the variance to
+// float rounding when a block lies far away compared with its particles' spread, and with it where a
+// surface cuts their mass. An instance has its own centre, so the same moments put it where it is.
 float tileMomentOrigin(BlockTile tile, mat4 view, bool perspective, vec3 eye) {
     return perspective ? length(tile.centreRadius.xyz - eye) : -(view * vec4(tile.centreRadius.xyz, 1.0)).z;
 }

@@ -38,8 +38,8 @@ void main() {
         // The tangent cone's quad, perpendicular to the eye→centre axis. Its corners reach further
         // sideways than the sphere; the ndc division below is only valid for corners in front of the
         // near plane, so a sphere close to the eye and seen obliquely (a lamp beside a particle) takes
-        // the whole tile too: a corner behind the eye flipped the quad off the tile, and the particle
-        // was missing from that light view (seed 9300 scene 07: 66% of one cube face's optical depth).
+        // the whole tile too: a corner behind the eye would flip the quad off the tile and drop the
+        // particle from that light view.
         float d = length(c);
         bool whole = d <= pr.w * 1.001 || -c.z - pr.w <= uParams.y * 2.0;
         vec3 right = vec3(1.0, 0.0, 0.0), up = vec3(0.0, 1.0, 0.0);

@@ -5,9 +5,9 @@
 
 // The normal (μ, s) whose part beyond `lo` has the given mean and deviation. The impostor's moments
 // are those of the mass on the ray, which starts at lo (a lamp's position); a normal with the same
-// moments, cut there, puts too little mass near lo: 41% of the true density at a lamp in a
-// particle's centre. The cut normal's deviation / (mean − lo) depends on α = (lo − μ)/s alone and
-// grows with it (0.17 at α = −6, 0.76 at 0, 0.94 at 3), so α is found by bisection.
+// moments, cut there, puts too little mass near lo. The cut normal's deviation / (mean − lo)
+// depends on α = (lo − μ)/s alone and grows with it (0.17 at α = −6, 0.76 at 0, 0.94 at 3), so α
+// is found by bisection.
 vec2 normalCutAt(float lo, float mean, float deviation) {
     float above = mean - lo;
     if (!(above > 0.0)) return vec2(mean, deviation);
@@ -36,11 +36,9 @@ struct BlockLightProfile {
 // `mean` and `deviation` of the block's mass along the ray (ray distance from its start) and its
 // impostor's [front, back]; `fromLight`: the ray starts at the light (a perspective view). The
 // block's mass lies within [front − reach, back + reach], and a normal fitted to its moments alone
-// spreads it beyond: a block of a dense particle and others behind it, 0.6 m from a lamp, cast
-// optical depth about 0.15 instead of 0.006 on a wing just in front of that particle, 0.12 with
-// this cut (block_scene_9700_07; a lamp's slices now take such a block particle by particle,
-// block_partition.h kMaxLampImpostorSpread). The normal is therefore cut at the front (and at the
-// light, where the medium starts) with the same moments, and holds everything beyond the back.
+// spreads it beyond, shadowing what lies just in front of the block. The normal is therefore cut at
+// the front (and at the light, where the medium starts) with the same moments, and holds
+// everything beyond the back.
 BlockLightProfile blockLightProfile(float mean, float deviation, float front, float back, float reach, bool fromLight) {
     float lo = front - reach;
     if (fromLight) lo = max(lo, 0.0);

@@ -45,9 +45,8 @@ float listedOpticalDepth(ivec2 items, vec3 origin, vec3 dir, float t) {
 
 // The share of the block's optical depth along the ray that lies in front of ray distance t, from
 // its own particles (the exact kernels, as the reference integrates them). The impostor's depth
-// profile is a two-moment fit: where the mesh cuts a block of several particles it misplaced the
-// cut by up to a particle (block_scene_01's seam band: 4.12% with the profile, 3.82% with this,
-// measured with the slice counts of the time). Negative when the block's particles are not listed.
+// profile is a two-moment fit: where the mesh cuts a block of several particles it misplaces the
+// cut by up to a particle. Negative when the block's particles are not listed.
 float listedMassBefore(ivec2 items, vec3 origin, vec3 dir, float t) {
     if (items.y <= 0) return -1.0;
     float total = listedOpticalDepth(items, origin, dir, 1e30);
@@ -120,11 +119,8 @@ float blockLocalLightSegment(vec3 origin, vec3 dir, float t0, float t1, float ta
     vec2 span = lampLayerSpan(i, origin, dir, layer);
     vec2 lit = spotConeInterval(i, origin, dir, Chord(0.0, 0.0, 0.0), min(t0, span.x), max(t1, span.y));
     float t[LAMP_NODES], f[LAMP_NODES];
-    // The segment's middle and half length stand for the kernel's centre and radius: seed 9300 scene
-    // 07 4.15% → 2.94% (its lamp near a rim; measured before block_impostors.vert stopped losing
-    // particles beside the lamp, which took it to 1.82%), others within ±0.15% (9200/01 0.85% →
-    // 0.94%). With a third of the particles' mean radius, 9200/01 went 6–12% dark around the lamp
-    // (the block's uniform rest has edges).
+    // The segment's middle and half length stand for the kernel's centre and radius (a third of the
+    // particles' mean radius darkens the lamp's surroundings: the block's uniform rest has edges).
     if (!lampQuadrature(i, origin, dir, lit, 0.5 * (t0 + t1), 0.5 * (t1 - t0), t, f)) return 0.0;
     float extinction[LAMP_NODES], inFront[LAMP_NODES], listed[LAMP_NODES], logFactor[LAMP_NODES];
     float rest = max(tau - lampLayerMass(i, origin, dir, t, layer, extinction, inFront, listed), 0.0) / (t1 - t0);
@@ -154,12 +150,10 @@ float blockSegmentVisibility(int i, vec3 origin, vec3 dir, BlockProfile profile,
     return clamp(litInFront ? before : 1.0 - before, 0.0, 1.0);
 }
 
-// A block is shaded at this many points along its visible segment: one point missed how the light
-// changes across a block of several particles (its own shadow, the mesh's): on cloud.gltf the seam
-// band erred 1.7% with one, 1.2% with two (equal weights). With the profile's mass as weights,
-// 0.76% with two, 1.16% with three and 1.26% with four: the smooth profile's errors and the
-// compositing order's cancel at two. The BLOCK_EXACT_SHADING build, which corrects the order
-// (block_order.glsl), converges with more points instead (exactShadingPieces).
+// A block is shaded at this many points along its visible segment, weighted by the profile's mass:
+// one point misses how the light changes across a block (its own shadow, the mesh's), and at two the
+// smooth profile's errors and the compositing order's cancel. The BLOCK_EXACT_SHADING build, which
+// corrects the order (block_order.glsl), converges with more points instead (exactShadingPieces).
 const int BLOCK_SHADING_PIECES = 2;
 #ifdef BLOCK_EXACT_SHADING
 const int MAX_SHADING_PIECES = 16;
@@ -170,19 +164,17 @@ const int MAX_SHADING_PIECES = BLOCK_SHADING_PIECES;
 // The exact build's piece count: one per 0.5 of optical depth along the ray, the block's own and
 // its overlapping neighbours' within its segment (`neighbours`), 4 to 16. The order factor varies across a piece as
 // the neighbours' mass in front of it does, and its value at one point misses its mean (Jensen's
-// gap): s9700_04, a τ 9 cigar of 1.0-1.6 m particles, erred 1.89% in the seam band with 8 pieces,
-// 1.24% with 12 and 0.99% with 16 (billboards 1.16%; measured with the own particles' light).
+// gap), so dense overlaps need thin pieces.
 int exactShadingPieces(float tau, float neighbours) { return clamp(int(ceil((tau + neighbours) / 0.5)), 4, MAX_SHADING_PIECES); }
 
-// Table nodes per piece (listedDepthTable); the shading point is interpolated between them.
-// s9700_04's seam band (the hardest scene exact passes) moves with it: 1.47% with 2, 0.73% with 4,
-// 1.20% with 8, 1.28% by bisection alone (billboards 1.15%).
+// Table nodes per piece (listedDepthTable); the shading point is interpolated between them. Four
+// erred least in the hardest seam band (docs/design-notes.md).
 const int LISTED_SUBNODES = 4;
 const int MAX_LISTED_NODES = MAX_SHADING_PIECES * LISTED_SUBNODES + 1;
 
 // The listed particles' optical depth from the eye to each of `count` ascending ray distances
-// `node`, in one walk over them (a chord per particle, not one per distance): by bisection alone,
-// the exact build's pieces walked them 25 times each, and cloud.gltf took 5.5× as long.
+// `node`, in one walk over them (a chord per particle, not one per distance): bisection alone
+// walks them again at every step of every piece.
 void listedDepthTable(ivec2 items, vec3 origin, vec3 dir, float node[MAX_LISTED_NODES], int count, out float depth[MAX_LISTED_NODES]) {
     for (int j = 0; j < count; ++j) depth[j] = 0.0;
     for (int k = items.x; k < items.x + items.y; ++k) {
@@ -205,9 +197,7 @@ void listedDepthTable(ivec2 items, vec3 origin, vec3 dir, float node[MAX_LISTED_
 // its start reaches the e^−v-weighted mean of what the span holds (shadingDepthFraction), as
 // particles mode places a particle's shading point (chordShadingPoint): linear between the nodes
 // that hold it, bisected first while they hold more than MAX_LINEAR_DEPTH. A dense particle's
-// point lies within its first unit of optical depth, which one interval can overshoot by far:
-// glory_of_dense_particle (one particle of τ 1e4 seen along the sun) erred 0.99 of RMS in blocks
-// with its point linear across one of 4 intervals, 2e-5 bisected.
+// point lies within its first unit of optical depth, which one interval can overshoot by far.
 const float MAX_LINEAR_DEPTH = 0.2;
 float tableShadingPoint(float node[MAX_LISTED_NODES], float depth[MAX_LISTED_NODES], int first, vec2 span, ivec2 items, vec3 origin,
                         vec3 dir) {
@@ -236,8 +226,8 @@ float tableShadingPoint(float node[MAX_LISTED_NODES], float depth[MAX_LISTED_NOD
 // depth profile's share of τ and weighted by the share of the block's light it sends to the front,
 // with the mesh visibility taken over the piece; point and spot lights near the segment or whose
 // cone's edge crosses it are integrated over the whole of it (blockLocalLightSegment: 1/d² across
-// a block spans far more than across one particle, and one shading point missed a lamp's glow by
-// up to 95%). `exact` (the BLOCK_EXACT_SHADING build only): the pieces and their points from the
+// a block spans far more than across one particle, and one shading point misses most of a lamp's
+// glow). `exact` (the BLOCK_EXACT_SHADING build only): the pieces and their points from the
 // listed particles, and the compositing order corrected (blockOrderLogFactor).
 vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails, float tau, GpuParticle block, ivec2 items,
                         LayerOrder layer, int pieces, bool exact) {
@@ -245,8 +235,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     float pieceLength = (t1 - t0) / float(pieces);
     float alpha = oneMinusExpNeg(tau);
     // The kernels' tails reach past [front, back] (which holds each particle's ±√3·R/3): where a
-    // shadow boundary crosses them, the lit share counts them, as the reference does (seed 19
-    // unseen variant 9, a ground through 4–8 mm particles: blocks 18.6% → 6.5%).
+    // shadow boundary crosses them, the lit share counts them, as the reference does.
     BlockProfile wide = widenedByTails(profile, tails);
     // Piece k: its extent, shading point and weight, the same for every light. Its weight is its own
     // opacity behind the pieces in front of it, by the profile's mass in it (equal shares put a dense
@@ -254,14 +243,11 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     // A block of lumps the slices do not resolve (the BLOCK_OWN_PARTICLES build) is shaded as particles
     // mode shades a particle: each piece at its listed particles' shading point, with the light's
     // transmittance integrated over the piece (layerTransmittance) from their exact own optical
-    // depth. A lone 7 mm particle of τ 60 lit from 0.5 m and seen from its side (fresh stability
-    // seed 13 variant 09, reference 3.06) gave 0.10 shaded at the piece's uniform point with one
-    // transmittance, 1.25 at the listed point, 3.33 with the layer integral (particles mode: 3.33).
-    // A smooth block keeps both: the layer integral erred more there (stop 13: block_scene_05
-    // 1.66% → 2.33%). The exact shading places the pieces and their points by the listed
-    // particles too (`listed`), with the light from the slices: its pieces are thin enough that the
-    // point's transmittance stands for the piece's (s9700_04's seam band 2.73% at uniform points,
-    // 1.30% at the listed ones; 0.99% with the own particles' light too, which walks them again per point).
+    // depth: a dense lump's light changes too steeply across a piece for one point to stand for it.
+    // A smooth block keeps the uniform point and one transmittance: the layer integral erred more there.
+    // The exact shading places the pieces and their points by the listed particles too (`listed`),
+    // with the light from the slices: its pieces are thin enough that the point's transmittance
+    // stands for the piece's.
     bool own = kOwnParticles && items.y > 0;
     bool listed = (kOwnParticles || exact) && items.y > 0;
     vec2 pieceSpan[MAX_SHADING_PIECES];
@@ -286,9 +272,8 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
         float pieceFront = t0 + float(k) * pieceLength;
         float after = k + 1 == pieces ? 1.0 : profileMassBefore(wide, pieceSpan[k].y);
         // The medium starts at the eye (a piece's kernel tails reach behind it when the camera is
-        // inside), and the pieces' shares are the listed particles' too: with the profile's, whose
-        // moments a cut at the eye bends, and the tails behind it, the phase peak seen into the sun
-        // from inside a particle of τ 30 was 2.7× too bright (hard case inside_towards_sun).
+        // inside), and the pieces' shares are the listed particles' too: a cut at the eye bends the
+        // profile's moments, and its tails would reach behind the eye.
         if (listed) {
             pieceSpan[k].x = max(pieceSpan[k].x, 0.0);
             if (k + 1 < pieces && listedTotal > 0.0) after = clamp((depth[(k + 1) * LISTED_SUBNODES] - depth[0]) / listedTotal, 0.0, 1.0);

@@ -5,9 +5,10 @@
 // what their depth profiles put in front of t (lamp_neighbourhood.glsl does the same with single
 // particles near a lamp). Drawn in the BLOCK_EXACT_SHADING build only: the factor needs many
 // shading points per block (block_lighting.glsl exactShadingPieces), and with two the point's
-// e^x misses the mean of e^x across a piece (Jensen's gap): s9700_08 2.78% dark in the seam band.
+// e^x misses the mean of e^x across a piece (Jensen's gap).
 // Needs media/block_data and media/block_lighting.
-layout(std430, binding = 10) readonly buffer BlockNeighbours { uvec2 blockNeighbours[]; };  // per block (first, count), then (block, rank)
+#include "media/bindings.glsl"
+layout(std430, binding = MEDIA_BLOCK_NEIGHBOURS_BINDING) readonly buffer BlockNeighbours { uvec2 blockNeighbours[]; };  // per block (first, count), then (block, rank)
 
 const int MAX_ORDER_NEIGHBOURS = 32;  // block_partition.h kMaxOrderNeighbours
 
@@ -27,9 +28,7 @@ float cameraMomentOrigin(BlockTile tile) {
 // The share of a neighbour's optical depth that its own draw kept in front of the surface it is
 // cut at: from its listed particles, as block_composite.frag's BLOCK_EXACT_CUT cuts a block a mesh
 // comes near (blocksNearMeshes; the surface lies among this one's particles), else its profile's.
-// With the profile's share the factor applied a cut the draw did not make: s10000_08 (a τ 5.5 tower
-// cut by a plate) erred 1.35% in the seam band, bright along the plate's far edge, and 0.78% with
-// this (billboards 1.13%); s9700_08 0.68% → 0.33%.
+// The profile's share alone would make the factor apply a cut the draw did not make.
 float drawnShareBefore(BlockTile tile, ProfileCdf cdf, vec3 origin, vec3 dir, float tSurface) {
     float listed = listedMassBefore(ivec2(tile.instance.zw), origin, dir, tSurface);
     return listed >= 0.0 ? listed : cdfMassBefore(cdf, tSurface);
@@ -37,8 +36,7 @@ float drawnShareBefore(BlockTile tile, ProfileCdf cdf, vec3 origin, vec3 dir, fl
 
 // Reads block `block`'s neighbours at `ndc` (its rank in the draw order: `rank`; its shading points
 // lie in `span`); returns their optical depth along the ray within `span`, where the factor varies
-// (counting all of it: the same seam band errors on the 26 hardest scenes within ±0.13%, and
-// cloud.gltf in exact took 18% longer).
+// (the exact build's piece count follows it; counting all of it costs time and gains no accuracy).
 float gatherOrderNeighbours(int block, int rank, vec2 ndc, float tSurface, vec2 span, vec3 origin, vec3 dir, sampler2D depths,
                             sampler2D moments) {
     orderNeighbourCount = 0;
@@ -57,8 +55,8 @@ float gatherOrderNeighbours(int block, int rank, vec2 ndc, float tSurface, vec2 
         float reach = blockKernelReach(tile.centreRadius.w);
         if (tSurface <= s.front - reach) continue;  // wholly behind the surface: not drawn, nothing in front
         BlockProfile profile = blockProfile(s.front, s.back, cameraMomentOrigin(tile), s.sums1.xy / s.tau);
-        // The kernels' tails reach past [front, back]: cut there, the profile put a neighbour's mass
-        // behind a point it covers, and the factor brightened (s9700_08: 2.41% bright, 0.87% with the tails).
+        // The kernels' tails reach past [front, back]: cut there, the profile would put a neighbour's
+        // mass behind a point it covers, and the factor would brighten the block.
         profile = widenedByTails(profile, vec2(reach));
         ProfileCdf cdf = profileCdf(profile);
         bool drawnAfter = int(entry.y) > rank;

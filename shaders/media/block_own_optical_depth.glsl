@@ -2,14 +2,13 @@
 // is made exact where the slices do not resolve it). Block slices hold each block's optical depth
 // spread along the light ray by its depth profile (block_light_profile.glsl), so a block of
 // particles thinner than the slice spacing or a texel shadows its own lit side with its whole
-// optical depth smeared over the interval: a 4–8 mm particle of τ 1e4 beside a spot light, in a
-// block of its own, was black (fresh stability seed 11 variant 02). Where the slices do not
-// resolve a block's particles, what they hold of the block at p is recomputed from its particles
-// as the light impostor and block_slices.frag made it, taken out, and their exact optical depth
-// from the light to p put in. The recomputation is exact where the light tile has one texel per
-// slice texel (which the atlas gives blocks of particles much smaller than a texel,
-// impostor_atlas.cpp tileSizes); elsewhere the tile's bilinear read is approximated by the rays
-// of the slice texels. Needs media/own_optical_depth, block_data and block_light_profile.
+// optical depth smeared over the interval (a small dense particle beside a lamp goes black). Where
+// the slices do not resolve a block's particles, what they hold of the block at p is recomputed
+// from its particles as the light impostor and block_slices.frag made it, taken out, and their
+// exact optical depth from the light to p put in. The recomputation is exact where the light tile
+// has one texel per slice texel (which the atlas gives blocks of particles much smaller than a
+// texel, impostor_atlas.cpp tileSizes); elsewhere the tile's bilinear read is approximated by the
+// rays of the slice texels. Needs media/own_optical_depth, block_data and block_light_profile.
 
 // The blocks composited with this code (BLOCK_OWN_PARTICLES) are chosen on the CPU
 // (block_passes.h blocksOfUnresolvedParticles): at most 64 particles each, which this walks for
@@ -20,7 +19,7 @@ const bool kOwnParticles = true;
 const bool kOwnParticles = false;
 #endif
 
-// x: what viewOpticalDepth(v, p) holds of the block's particles `items` (block_slices.frag, read
+// x: what mediaViewOpticalDepth(v, p) holds of the block's particles `items` (block_slices.frag, read
 // back as the slices are); y: their exact optical depth from the light to p. `centreRadius`: the
 // block's centre (origin-relative world), about which its light impostor sums its depth moments,
 // and its mean particle radius (its tile's); `oneByOne`: a lamp's view holds its particles one by
@@ -89,8 +88,8 @@ float blockLightDepth(int i, vec3 p, ivec2 items, GpuParticle block) {
     if (!kOwnParticles) return mediumOpticalDepth(i, p);
     int view = lightSliceView(i, p);
     if (view < 0) return 0.0;
-    GpuLightView v = transmittanceViews[view];
-    float slices = viewOpticalDepth(v, p);
+    GpuLightView v = mediaSliceViews[view];
+    float slices = mediaViewOpticalDepth(v, p);
     if (items.y <= 0) return slices;
     vec2 own = ownBlockOpticalDepth(v, p, items, block.positionRadius, block.extra.y > 0.5);
     return max(slices - own.x, 0.0) + own.y;

@@ -3,12 +3,13 @@
 // (block_seam_mask_pass.cpp), one fragment per mask cell. A cell is set where, at one of its media
 // texels, the opaque surface lies within the block's [front − reach, back + reach]: there
 // block_composite.frag cuts the block, and the smooth shading's error shows along the cut.
+#include "media/bindings.glsl"
 #include "common/frame.glsl"
 #include "media/block_data.glsl"
 #include "media/block_seam.glsl"
 
-layout(binding = 3) uniform sampler2D uSceneDepth;
-layout(binding = 5) uniform sampler2D uImpostorDepths;
+layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
+layout(binding = MEDIA_IMPOSTOR_DEPTHS_UNIT) uniform sampler2D uImpostorDepths;
 
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per media texel
 layout(location = 3) uniform ivec2 uMediaSize;    // the media target's texels

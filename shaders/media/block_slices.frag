@@ -3,6 +3,7 @@
 // gets τ · Φ((t_k − μ)/σ), a normal with the block's optical-depth-weighted mean and deviation along
 // the light ray, cut where the block's kernels start (and at a lamp) and complete past where they
 // end (block_light_profile.glsl). Additive, like the particle slices.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "media/optics.glsl"
 #include "media/block_data.glsl"
@@ -14,8 +15,8 @@ layout(location = 2) uniform vec4 uParams;  // x: perspective, y: slice near, z:
 layout(location = 3) uniform vec2 uHalfExtent;  // tan of the half angles, or half size in metres (view_rays.glsl)
 layout(location = 4) uniform vec2 uViewportSize;
 layout(location = 6) uniform vec3 uLightOrigin;
-layout(binding = 5) uniform sampler2D uImpostorDepths;
-layout(binding = 6) uniform sampler2D uImpostorMoments;
+layout(binding = MEDIA_IMPOSTOR_DEPTHS_UNIT) uniform sampler2D uImpostorDepths;
+layout(binding = MEDIA_SLICE_IMPOSTOR_MOMENTS_UNIT) uniform sampler2D uImpostorMoments;
 
 flat in int vBlock;
 

@@ -1,7 +1,8 @@
 // Seed 004's pre-integrated kernel segments (media/kernel_table.h): the optical depth of a particle
 // of unit radius and unit peak extinction along a ray at impact parameter β, from where the ray
 // enters the sphere up to μ past its closest point (β, μ in radii). Bilinear in a small table.
-layout(binding = 6) uniform sampler2D uKernelTable;
+#include "media/bindings.glsl"
+layout(binding = MEDIA_KERNEL_TABLE_UNIT) uniform sampler2D uKernelTable;
 
 float kernelSegment(float beta, float mu) {
     vec2 size = vec2(textureSize(uKernelTable, 0));

@@ -1,7 +1,8 @@
 // Near a point or spot light, the exact attenuation of a composited layer's light
 // (media/lamp_neighbourhood.h says why compositing order gets it wrong there). Needs common/frame,
 // lights, media/optics, particle_data.
-layout(std430, binding = 8) readonly buffer LampNeighbourhoods { uint lampWords[]; };  // uvec4 per light, then uvec2 per neighbour
+#include "media/bindings.glsl"
+layout(std430, binding = MEDIA_LAMP_NEIGHBOURHOODS_BINDING) readonly buffer LampNeighbourhoods { uint lampWords[]; };  // uvec4 per light, then uvec2 per neighbour
 
 // Where a composited layer (a particle, or a block of them) stands, and how its fragments clip.
 struct LayerOrder {
@@ -40,9 +41,8 @@ float lampListWeight(LampList list, int light, vec3 x) {
 // lamp's peak, and e^x averaged is not e^(x averaged). Exact for the listed neighbours where their
 // list is complete, within `reach` of the lamp (lampListWeight).
 // Capped: the factor undoes what the layers drawn after this one take away in the blend, and past
-// e^50 their transmittance (at most e^−50) leaves nothing a float can give back. Uncapped, the
-// e^τ of a τ = 1e4 neighbour was inf, and the blend's 0 · inf made NaN pixels (a spot inside dense
-// particles: tests/stability spot_in_opaque_cloud).
+// e^50 their transmittance (at most e^−50) leaves nothing a float can give back. Uncapped, a dense
+// neighbour's e^τ overflows to inf, and the blend's 0 · inf makes NaN pixels.
 const float MAX_LAMP_LOG_FACTOR = 50.0;
 void lampOrderCorrection(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], LayerOrder layer,
                          out float logFactor[LAMP_NODES]) {
@@ -87,9 +87,9 @@ vec2 lampLayerSpan(int light, vec3 origin, vec3 dir, LayerOrder layer) {
 // The layer's own listed particles along the ray: their extinction σρ at each point, their optical
 // depth in front of it (from the eye, clipped at layer.tEnd as the impostor is), and their total.
 // A block assumes uniform density, which near a lamp puts mass where the block has none, or too
-// little where its particles crowd the lamp (3.5× too bright on a lamp at a cloud's edge); the
-// listed particles are exact there. `listed[j]`: how far each point lies where the list is
-// complete (lampListWeight), so where the block's other particles have no mass.
+// little where its particles crowd the lamp; the listed particles are exact there. `listed[j]`:
+// how far each point lies where the list is complete (lampListWeight), so where the block's other
+// particles have no mass.
 float lampLayerMass(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], LayerOrder layer, out float extinction[LAMP_NODES],
                     out float inFront[LAMP_NODES], out float listed[LAMP_NODES]) {
     LampList list = lampList(light);

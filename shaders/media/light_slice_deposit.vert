@@ -1,4 +1,5 @@
 #version 450 core
+#include "media/bindings.glsl"
 #extension GL_ARB_shader_viewport_layer_array : require
 // Light-slice deposit (media/light_slice_deposit_pass.cpp): each piece is one particle and one slab
 // between two slice planes it reaches; its quad, facing the light and covering the sphere as the
@@ -7,7 +8,7 @@
 #include "media/particle_data.glsl"
 #include "media/light_billboard.glsl"
 
-layout(std430, binding = 11) readonly buffer SlicePieces { uint slicePieces[]; };  // particle << 5 | slab
+layout(std430, binding = MEDIA_SLICE_PIECES_BINDING) readonly buffer SlicePieces { uint slicePieces[]; };  // particle << 5 | slab
 
 layout(location = 0) uniform mat4 uView;        // origin-relative world → light view
 layout(location = 2) uniform vec4 uParams;      // x: perspective, y: depth near, z: depth far, w: slices

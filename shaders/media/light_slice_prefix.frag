@@ -1,8 +1,9 @@
 #version 450 core
 // Light-slice prefix (media/light_slice_prefix_pass.cpp): the optical depth up to each slice plane
 // of one light view, as the running sum of its slabs, into 4 slices per RGBA32F layer: the layout
-// common/transmittance.glsl reads.
-layout(binding = 0) uniform sampler2DArray uSlabs;
+// media/host/light_transmittance.glsl reads.
+#include "media/bindings.glsl"
+layout(binding = MEDIA_SLABS_UNIT) uniform sampler2DArray uSlabs;
 layout(location = 0) uniform int uFirstSlab;
 layout(location = 1) uniform int uSlices;
 

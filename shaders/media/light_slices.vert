@@ -1,6 +1,7 @@
 #version 450 core
 // Light-slice pass (media/light_slice_pass.cpp): each particle becomes a quad, facing the light,
 // that covers its sphere as the light sees it. The fragment shader does the exact integral.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "media/particle_data.glsl"
 
@@ -14,7 +15,7 @@ const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.
 
 #ifdef SLICE_PARTICLE_LIST
 // Blocks mode: only the particles a lamp's slices take one by one (media/block_slice_pass.cpp).
-layout(std430, binding = 9) readonly buffer LampSliceParticles { uint lampSliceParticles[]; };
+layout(std430, binding = MEDIA_LAMP_SLICE_PARTICLES_BINDING) readonly buffer LampSliceParticles { uint lampSliceParticles[]; };
 int instanceParticle() { return int(lampSliceParticles[gl_InstanceID]); }
 #else
 int instanceParticle() { return gl_InstanceID; }

@@ -73,14 +73,13 @@ float layerTransmittance(float entry, float atShading, float vBar, float tau) {
 
 // The medium's transmittance towards light i as a whole layer receives it. The layer adds
 // ∫₀^τ J(v) e^−v dv (v: its optical depth from `entry`, where the ray enters it), and J carries
-// e^−τl(v), τl the light's optical depth; one e^−τl at the shading point v̄ (Jensen's gap) missed
-// how τl changes across a dense layer: seen along the sun from inside a particle of τ 30, τl falls
-// as v grows and every point sends the same light (3× too dark at the phase peak); a thick
-// particle lit from the side is a half-space whose surface sends μ0/(μ0 + μ) of it. With τl linear
-// in v through its values at the entry and at v̄, the integral is closed-form and exact in both;
-// returns it over 1 − e^−τ, in place of e^−τl(v̄). τl carries the particle's own optical depth
-// exactly where the slices do not resolve it (particleLightDepth): their spread of it made the
-// slope across a spot-lit particle of 8 mm 52% too bright (unseen stability seed 19, variant 02).
+// e^−τl(v), τl the light's optical depth; one e^−τl at the shading point v̄ (Jensen's gap) misses
+// how τl changes across a dense layer: seen along the sun from inside a dense particle, τl falls
+// as v grows and every point sends the same light; a thick particle lit from the side is a
+// half-space whose surface sends μ0/(μ0 + μ) of it. With τl linear in v through its values at the
+// entry and at v̄, the integral is closed-form and exact in both; returns it over 1 − e^−τ, in
+// place of e^−τl(v̄). τl carries the particle's own optical depth exactly where the slices do not
+// resolve it (particleLightDepth): their spread of it distorts the slope across a small particle.
 float layerLightTransmittance(int i, vec3 entry, vec3 p, float vBar, float tau, GpuParticle particle) {
     float atP = particleLightDepth(i, p, particle);
     if (!(vBar > 1e-4) || !(tau > 1e-4)) return exp(-atP);
@@ -89,13 +88,11 @@ float layerLightTransmittance(int i, vec3 entry, vec3 p, float vBar, float tau, 
 
 // Where a mesh shadow boundary crosses the ray between t0 and t1: taps at both ends and at t; where
 // two disagree, bisection between them, then one secant step on the taps' depth margins, which is
-// exact where the occluder is locally flat. Bisection alone left the crossing up to 1/128 of the
-// segment off: a ground through a particle's centre seen along the sun lit 0.509 of it, not 0.5,
-// and its g = 0.99 phase peak was 1.8% off (tests/stability unseen variant 04). False when none
-// disagree, with `soft` 1 (all lit) or 0; else the crossing and whether the ray is lit in front of it.
+// exact where the occluder is locally flat (bisection alone leaves the crossing up to 1/128 of the
+// segment off, which a sharp phase peak shows). False when none disagree, with `soft` 1 (all lit)
+// or 0; else the crossing and whether the ray is lit in front of it.
 // Not the taps' depth-soft average: a ray that stays on one side is wholly lit or wholly shadowed in
-// the reference, and the average dimmed a ray 0.16 m above a ground through the particles' centres
-// to ~70% (tests/stability surface_grazing: particles 1.3% → 0.51%, blocks 1.1% → 0.27%).
+// the reference, and the average dims rays that graze a surface.
 bool meshShadowCrossing(int i, vec3 origin, vec3 dir, float t0, float t, float t1, out float soft, out float crossing,
                         out bool litInFront) {
     float m0 = meshShadowMargin(i, origin + dir * t0), mt = meshShadowMargin(i, origin + dir * t);
@@ -174,8 +171,8 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
                 vec2 J = localLightSegment(origin, dir, c, radius, lo, hi, lit, i, particle, nearLamp, layer);
                 if (J.x <= 0.0) continue;
                 // The depth softness stands for the mass around a tap; here the light comes from
-                // within about the lamp's distance of J.y, not from the whole kernel (R/3 darkened the
-                // medium above a lit floor by up to 25 % around a lamp inside a particle).
+                // within about the lamp's distance of J.y, not from the whole kernel (R/3 darkens the
+                // medium above a lit floor around a lamp inside a particle).
                 float visibility = lights[i].spot.z >= 0.0 && !nearLamp ? segmentVisibility(i, origin, dir, c, radius, lo, hi, J.y) : 1.0;
                 float transmittance = nearLamp ? 1.0 : exp(-particleLightDepth(i, origin + dir * (c.tClosest + J.y), particle));
                 scattered += lights[i].radiance.rgb * (J.x * visibility * transmittance);

@@ -15,13 +15,10 @@
 // t = t_l + b·tan φ (t_l the lamp's closest approach along the ray, b its distance), where 1/d²
 // peaks. Where the kernel's centre lies more than two deviations from t_l, its bulk and the
 // lamp's peak are integrated apart, split halfway: φ within that reach of t_l, t beyond it, where
-// the kernel varies and 1/d² hardly does. φ alone squeezed the far chord into a sliver next to
-// ±π/2 with no node in the bulk, and a lamp near a particle's rim (a fiftieth of the peak density)
-// glowed 7–23% too bright (make_block_scenes.py seed 9300, scene 07, its particles one by one);
-// now within ±3%, and campfire.gltf 2.43% → 2.37%. Splitting at one deviation, or in ln |t − t_l|
-// beyond it, fixed the rim but took campfire.gltf to 2.7–2.8%. Fills the ray parameters t[j] and
-// weights w[j] (Jacobian and 1/d² included: Σ w_j f(t_j) ≈ the integral); false when the interval
-// is empty. b is at least 1e-4 of the interval (a lamp exactly on the ray).
+// the kernel varies and 1/d² hardly does. φ alone squeezes the far chord into a sliver next to
+// ±π/2 with no node in the bulk, and a lamp near a particle's rim glows too bright. Fills the ray
+// parameters t[j] and weights w[j] (Jacobian and 1/d² included: Σ w_j f(t_j) ≈ the integral); false
+// when the interval is empty. b is at least 1e-4 of the interval (a lamp exactly on the ray).
 bool lampQuadrature(int i, vec3 origin, vec3 dir, vec2 lit, float kernelAt, float radius, out float t[LAMP_NODES],
                     out float w[LAMP_NODES]) {
     vec3 toLight = lights[i].position.xyz - origin;
@@ -61,7 +58,7 @@ bool lampQuadrature(int i, vec3 origin, vec3 dir, vec2 lit, float kernelAt, floa
 
 // The mesh visibility of lamp i at x, one shadow tap per quadrature node. Near a lamp the light
 // comes from within about its distance of the ray, not from a whole kernel: a tap softened over the
-// kernel's depth (R/3) let a lamp 3 cm under a plate light the medium above it at 30 %. The depth
+// kernel's depth (R/3) lets a lamp just under a plate light the medium above it. The depth
 // softness left, a tenth of the distance, stays above a cube-map texel's footprint at grazing slopes.
 float lampMeshVisibility(int i, vec3 x) {
     return lights[i].spot.z >= 0.0 ? meshVisibilityTap(i, x, 0.1 * distance(x, lights[i].position.xyz)) : 1.0;

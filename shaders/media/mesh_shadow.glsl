@@ -1,8 +1,9 @@
 // The mesh shadow map read as raw depth, for the medium (lighting.glsl, particle_splats.frag): a
 // comparison with the receiver's depth along the light, softened over a depth, never a hard cut.
 // Needs common/lights.glsl and common/light_views.glsl.
+#include "media/bindings.glsl"
 #include "common/shadow_views.glsl"
-layout(binding = 4) uniform sampler2DArray uShadowDepth;  // the mesh shadow map, read as raw depth
+layout(binding = MEDIA_SHADOW_DEPTH_UNIT) uniform sampler2DArray uShadowDepth;  // the mesh shadow map, read as raw depth
 
 // Light-view depth stored in a shadow map texel (reversed Z), back to metres along the light axis.
 float shadowTexelDepth(GpuLightView v, float stored) {

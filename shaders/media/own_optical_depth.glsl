@@ -1,12 +1,11 @@
-// A particle's own share of the light slices (common/transmittance.glsl). The slices hold every
+// A particle's own share of the light slices (media/host/light_transmittance.glsl). The slices hold every
 // particle's optical depth at slice planes and texel centres, read linearly between them, so a
 // particle thinner than the slice spacing or a texel shades itself with its own optical depth
-// spread over the slice interval and the texels around it: a millimetre particle of τ 300 beside a
-// spot light took about half of it at its lit skin and went black. Where the slices do not resolve
-// a particle, what they hold of it at p is recomputed as light_slices.frag wrote it, taken out, and
-// its exact optical depth from the light to p put in. Other particles' spread stays: a slice map
-// cannot tell them apart. Blocks do the same with a block's particles
-// (block_own_optical_depth.glsl). Needs common/transmittance.glsl and media/optics.glsl.
+// spread over the slice interval and the texels around it, and its lit skin goes dark. Where the
+// slices do not resolve a particle, what they hold of it at p is recomputed as light_slices.frag
+// wrote it, taken out, and its exact optical depth from the light to p put in. Other particles'
+// spread stays: a slice map cannot tell them apart. Blocks do the same with a block's particles
+// (block_own_optical_depth.glsl). Needs media/host/light_transmittance.glsl and media/optics.glsl.
 
 // The particle's optical depth along a light-view ray from where the ray starts (the light, for a
 // perspective view) up to ray parameter t, integrated as light_slices.frag does.
@@ -28,7 +27,7 @@ Chord lightViewChord(bool perspective, vec2 onPlane, vec3 centre, float radius, 
     return chordOf(vec3(onPlane, 0.0), vec3(0.0, 0.0, -1.0), centre, radius);
 }
 
-// What viewOpticalDepth(v, p) reads: the slice interval around p's depth and the four texels of
+// What mediaViewOpticalDepth(v, p) reads: the slice interval around p's depth and the four texels of
 // its bilinear filter, each with its weight and its ray (a point of the plane at depth 1).
 struct SliceRead {
     bool inView;       // false: p lies outside the view, where the slices hold nothing of any particle
@@ -60,7 +59,7 @@ SliceRead sliceRead(GpuLightView v, vec3 p) {
     r.f = s >= float(K) ? 1.0 : s - float(k);
     r.nearPlane = v.params.y + float(k) * spacing;
     r.farPlane = r.nearPlane + spacing;
-    vec2 size = vec2(textureSize(transmittanceSlices, 0).xy);
+    vec2 size = vec2(textureSize(mediaSlices, 0).xy);
     vec2 texel = uv * size - 0.5;
     vec2 base = floor(texel), w = texel - base;
     for (int j = 0; j < 4; ++j) {
@@ -75,7 +74,7 @@ SliceRead sliceRead(GpuLightView v, vec3 p) {
 // The light-view ray through p, as a point of the plane at depth 1 (lightViewChord).
 vec2 sliceReadOwnRay(SliceRead r) { return r.perspective ? r.pView.xy / max(r.depth, 1e-30) : r.pView.xy; }
 
-// x: what viewOpticalDepth(v, p) holds of the particle (slice planes interpolated, four texels
+// x: what mediaViewOpticalDepth(v, p) holds of the particle (slice planes interpolated, four texels
 // filtered); y: its exact optical depth from the light to p.
 vec2 ownOpticalDepth(GpuLightView v, vec3 p, vec4 positionRadius, float sigma) {
     SliceRead r = sliceRead(v, p);
@@ -100,8 +99,7 @@ vec2 ownOpticalDepth(GpuLightView v, vec3 p, vec4 positionRadius, float sigma) {
 // Whether view v's slices resolve a particle of this radius and peak extinction at p: slice planes
 // and texels no farther apart than it is wide, and neither holding more than an optical depth of 2
 // of it. Read linearly between planes, a dense particle's own τ rises across its lit skin as a
-// chord over a cliff: one particle of τ 1e4 and R 0.7 m seen along the sun (g = −0.99, its glory
-// 690) gave 18 with planes 4 cm apart (fresh stability seed 23 variant 04; 0.03% with this).
+// chord over a cliff, and the light its skin scatters comes out far too dark.
 // block_composite_pass.cpp blocksOfUnresolvedParticles decides the same for blocks.
 bool slicesResolve(GpuLightView v, vec3 p, float radius, float sigma) {
     float spacing = (v.params.z - v.params.y) / max(v.params.w, 1.0);
@@ -110,20 +108,15 @@ bool slicesResolve(GpuLightView v, vec3 p, float radius, float sigma) {
 }
 
 // The light view of light i whose slices hold p, or −1 where the light has none.
-int lightSliceView(int i, vec3 p) {
-    if (frame.counts.y == 0) return -1;
-    GpuLight L = lights[i];
-    int first = int(L.media.x);
-    return first < 0 ? -1 : lightViewIndex(first, int(L.media.y), L.position.xyz, p);
-}
+int lightSliceView(int i, vec3 p) { return mediaLightSliceView(i, lights[i].position.xyz, p); }
 
 // The medium's optical depth towards light i that a point p of `particle` receives: the slices',
 // with the particle's own share made exact where they do not resolve it.
 float particleLightDepth(int i, vec3 p, GpuParticle particle) {
     int view = lightSliceView(i, p);
     if (view < 0) return 0.0;
-    GpuLightView v = transmittanceViews[view];
-    float slices = viewOpticalDepth(v, p);
+    GpuLightView v = mediaSliceViews[view];
+    float slices = mediaViewOpticalDepth(v, p);
     if (slicesResolve(v, p, particle.positionRadius.w, particle.albedoSigma.w)) return slices;
     vec2 own = ownOpticalDepth(v, p, particle.positionRadius, particle.albedoSigma.w);
     return max(slices - own.x, 0.0) + own.y;

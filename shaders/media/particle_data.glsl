@@ -1,5 +1,6 @@
 // The particle instance buffer (media/particle_buffer.h GpuParticle), positions relative to the
 // frame origin.
+#include "media/bindings.glsl"
 struct GpuParticle {
     vec4 positionRadius;  // xyz origin-relative centre, w radius
     vec4 albedoSigma;     // rgb albedo, w peak extinction σ (1/m)
@@ -7,4 +8,4 @@ struct GpuParticle {
     vec4 extra;           // x phase (0 HG, 1 Rayleigh)
 };
 
-layout(std430, binding = 3) readonly buffer Particles { GpuParticle particles[]; };
+layout(std430, binding = MEDIA_PARTICLES_BINDING) readonly buffer Particles { GpuParticle particles[]; };

@@ -12,6 +12,7 @@
 // LIGHTING_EXACT shades each ray as particles.frag shades a pixel; otherwise light is taken at the
 // ray's shading point: phase, the mesh shadow map with seed 001's smooth weighting over the
 // particle's depth, and the slices' transmittance integrated over the layer.
+#include "media/bindings.glsl"
 layout(local_size_x = 64) in;
 #define SEGMENT_SKIPS_LIGHT litPerFragment
 
@@ -19,15 +20,15 @@ layout(local_size_x = 64) in;
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
-#include "common/transmittance.glsl"
+#include "media/slices.glsl"
 #include "media/optics.glsl"
 #include "media/particle_data.glsl"
 #include "media/particle_light_layout.glsl"
 #include "media/lighting.glsl"
 #include "media/billboard.glsl"
 
-layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
-layout(std430, binding = 10) writeonly buffer ParticleLight { vec4 particleLight[]; };  // per rank: particle_light_layout.glsl
+layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
+layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) writeonly buffer ParticleLight { vec4 particleLight[]; };  // per rank: particle_light_layout.glsl
 layout(location = 0) uniform uint uCount;
 
 const float INNER = 0.5, OUTER = 0.9;  // the two rings of samples, in billboard half sizes

@@ -4,6 +4,7 @@
 // table; the source from the lighting pass's fit (particle_lighting.comp), with the sun's phase
 // function and the lamps (MEDIA_FRAGMENT_LAMPS) at this pixel's own ray. Output (α·J, α) blends
 // premultiplied, exactly as particles.frag's does.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
@@ -12,12 +13,12 @@
 #include "media/particle_light_layout.glsl"
 #ifdef MEDIA_FRAGMENT_LAMPS
 #include "common/light_views.glsl"
-#include "common/transmittance.glsl"
+#include "media/slices.glsl"
 #include "media/spot_cone.glsl"
 #include "media/mesh_shadow.glsl"
 #endif
 
-layout(binding = 3) uniform sampler2D uSceneDepth;
+layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(location = 1) uniform vec2 uFullResScale;
 
 flat in vec4 vCentreRadius;

@@ -2,13 +2,14 @@
 // Fast particles (media/particle_splat_pass.cpp): sorted billboards, back to front, carrying the
 // fit of their source the lighting pass computed (particle_lighting.comp): its linear part
 // interpolated across the quad, the rest for the fragments.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "media/particle_data.glsl"
 #include "media/billboard.glsl"
 
-layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
-layout(std430, binding = 10) readonly buffer ParticleLight { vec4 particleLight[]; };
+layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
+layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) readonly buffer ParticleLight { vec4 particleLight[]; };
 #include "media/particle_light_layout.glsl"
 
 flat out vec4 vCentreRadius;  // origin-relative centre, radius

@@ -3,16 +3,17 @@
 // ray (clipped at the opaque surface when soft particles are on), opacity α = 1 − e^−τ, and the
 // in-scattered source J at the kernel's centroid on that segment. Output (α·J, α) blends
 // premultiplied over what is behind; the alpha channel accumulates the view transmittance.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
-#include "common/transmittance.glsl"
+#include "media/slices.glsl"
 #include "media/optics.glsl"
 #include "media/particle_data.glsl"
 #include "media/lighting.glsl"
 
-layout(binding = 3) uniform sampler2D uSceneDepth;
+layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(location = 0) uniform int uSoftParticles;
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
 

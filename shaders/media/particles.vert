@@ -1,14 +1,15 @@
 #version 450 core
 // `particles` mode (media/particle_pass.cpp): sorted billboards, back to front. Each quad covers
 // its particle's sphere on screen; the fragment shader integrates the kernel along the pixel's ray.
+#include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "media/particle_data.glsl"
 
-layout(std430, binding = 5) readonly buffer DrawOrder { uint drawOrder[]; };
+layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 
 // x: the particle's index, y: its place in the draw order. One varying, not two: llvmpipe keeps
-// setup data per varying per triangle, ~90 B per particle for a second one at 10⁶ particles.
+// setup data per varying per triangle, which a second one would add for every particle.
 flat out ivec2 vParticle;
 
 const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));

@@ -86,7 +86,7 @@ TEST_F(StabilityTest, ParticlesDyingOutStayFinite) {
     const auto& extensions = session.app().resource<render::RenderExtensions>().list;
     const auto* state = session.app().world().tryResource<media::ecs::MediaRendererState>();
     ASSERT_NE(state, nullptr);
-    EXPECT_EQ(std::count(extensions.begin(), extensions.end(), state->renderer.get()), 0);
+    EXPECT_EQ(std::count(extensions.begin(), extensions.end(), state->extension.get()), 0);
 }
 
 // ── 1 particle ───────────────────────────────────────────────────────────────────────────────

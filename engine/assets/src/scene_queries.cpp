@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "animation_sampling.h"
+#include "nimbus/base/camera_frame.h"
 #include "nimbus/base/error.h"
 
 namespace nimbus::assets {
@@ -21,32 +22,6 @@ glm::dmat4 composeTrs(const Trs& p) {
     const glm::dmat4 t = glm::translate(glm::dmat4(1.0), p.translation);
     const glm::dmat4 r = glm::mat4_cast(p.rotation);
     return glm::scale(t * r, p.scale);
-}
-
-// A unit vector along `v`, or `fallback` when v has no usable length (zero or non-finite scale).
-glm::dvec3 unitOr(const glm::dvec3& v, const glm::dvec3& fallback) {
-    const double length = glm::length(v);
-    return length > 1e-300 && std::isfinite(length) ? v / length : fallback;
-}
-
-// An orthonormal right-handed frame from a camera's world matrix: forward is local -Z, up is
-// local +Y made perpendicular to it. Robust to (non-uniform) scale and shear.
-struct Frame {
-    glm::dvec3 forward, up, right;
-};
-
-Frame cameraFrame(const glm::dmat4& world) {
-    Frame f;
-    f.forward = unitOr(-glm::dvec3(world[2]), {0.0, 0.0, -1.0});
-    glm::dvec3 up = glm::dvec3(world[1]) - glm::dot(glm::dvec3(world[1]), f.forward) * f.forward;
-    if (!(glm::length(up) > 1e-12 * glm::length(glm::dvec3(world[1]))) || !(glm::length(up) > 1e-300)) {
-        // Y collapsed onto the view direction: any perpendicular will do.
-        const glm::dvec3 helper = std::abs(f.forward.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-        up = helper - glm::dot(helper, f.forward) * f.forward;
-    }
-    f.up = glm::normalize(up);
-    f.right = glm::cross(f.forward, f.up);
-    return f;
 }
 
 }  // namespace

@@ -64,4 +64,13 @@ Texture::Texture(const TextureDesc& desc) : desc_(desc) {
     glTextureParameteri(name, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
 }
 
+Texture Texture::borrow(GLuint name, const TextureDesc& desc) {
+    Texture t;
+    t.borrowed_ = name;
+    t.desc_ = desc;
+    t.desc_.depth = std::max(t.desc_.depth, 1);
+    t.desc_.levels = std::max(t.desc_.levels, 1);
+    return t;
+}
+
 }  // namespace nimbus::gpu

@@ -20,10 +20,17 @@ std::string readFile(const std::filesystem::path& path) {
 }
 
 struct Preprocessor {
-    std::filesystem::path folder;
+    std::vector<std::filesystem::path> folders;  // the program's folder, then its include path
     PreprocessedSource out;
     std::set<std::string> included;
     std::vector<std::string> stack;
+
+    // The first folder that has `file` (the program's own when none has: its error names that path).
+    std::filesystem::path locate(const std::string& file) const {
+        for (const auto& folder : folders)
+            if (std::filesystem::exists(folder / file)) return folder / file;
+        return folders.front() / file;
+    }
 
     void expand(const std::string& file, const std::vector<std::string>* defines) {
         for (const auto& open : stack)
@@ -33,7 +40,7 @@ struct Preprocessor {
         const int index = static_cast<int>(out.files.size());
         out.files.push_back(file);
 
-        std::istringstream lines(readFile(folder / file));
+        std::istringstream lines(readFile(locate(file)));
         static const std::regex includeLine(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
         std::string line;
         int number = 0;
@@ -59,9 +66,9 @@ struct Preprocessor {
     }
 };
 
-Shader compileStage(GLenum type, const std::filesystem::path& folder, const std::string& file,
-                    const std::vector<std::string>& defines, std::string& errors) {
-    PreprocessedSource source = preprocessShader(folder, file, defines);
+Shader compileStage(GLenum type, const ProgramDesc& desc, const std::filesystem::path& folder, const std::string& file,
+                    std::string& errors) {
+    PreprocessedSource source = preprocessShader(folder, file, desc.defines, desc.includePath);
     Shader shader(glCreateShader(type));
     const char* text = source.text.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);
@@ -81,8 +88,9 @@ Shader compileStage(GLenum type, const std::filesystem::path& folder, const std:
 }  // namespace
 
 PreprocessedSource preprocessShader(const std::filesystem::path& folder, const std::string& file,
-                                    const std::vector<std::string>& defines) {
-    Preprocessor pre{folder, {}, {}, {}};
+                                    const std::vector<std::string>& defines, const std::vector<std::filesystem::path>& includePath) {
+    Preprocessor pre{{folder}, {}, {}, {}};
+    pre.folders.insert(pre.folders.end(), includePath.begin(), includePath.end());
     pre.expand(file, &defines);
     return pre.out;
 }
@@ -120,7 +128,7 @@ Program compileProgram(const ProgramDesc& desc) {
     std::string names;
     for (const auto& [type, file] : wanted) {
         if (file->empty()) continue;
-        stages.push_back(compileStage(type, folder, *file, desc.defines, errors));
+        stages.push_back(compileStage(type, desc, folder, *file, errors));
         names += (names.empty() ? "" : "+") + *file;
     }
     if (stages.empty()) throw SystemError("shader program with no stages");

@@ -1,4 +1,5 @@
-// Opaque meshes, Lambert-shaded with mesh shadows and medium transmittance (shaders/opaque.*).
+// Opaque meshes, Lambert-shaded with mesh shadows and what extensions add (the medium's
+// transmittance; shaders/opaque.*).
 // Writes scene colour (linear RGBA32F, cleared to the background radiance) and reversed-Z depth,
 // which later passes read for soft particles and mesh–medium intersections.
 #include "passes.h"
@@ -9,12 +10,23 @@
 
 namespace nimbus::render {
 
-OpaquePass::OpaquePass() { program_ = gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag"}); }
+OpaquePass::OpaquePass() { program({}); }
+
+const gpu::Program& OpaquePass::program(const std::vector<MeshShadingInput>& inputs) {
+    std::vector<std::string> defines;
+    for (const auto& input : inputs) defines.push_back(input.define);
+    auto it = programs_.find(defines);
+    if (it == programs_.end())
+        it = programs_.emplace(defines, gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = defines})).first;
+    return it->second;
+}
 
 void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows) {
     struct Data {
-        ResourceHandle color, depth, shadowMap, slices;
+        ResourceHandle color, depth, shadowMap;
+        std::vector<std::pair<GLuint, ResourceHandle>> textures;  // the extensions' (unit, texture)
     };
+    const GLuint programId = program(context.meshShading).id();
     const int w = context.view.width, h = context.view.height;
     const auto& data = graph.addPass<Data>(
         "opaque",
@@ -22,9 +34,10 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
             d.color = builder.create("scene_color", {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
             d.depth = builder.create("scene_depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, w, h, 1, 1});
             if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
-            if (context.transmittanceSlices.valid()) d.slices = builder.read(context.transmittanceSlices);
+            for (const auto& input : context.meshShading)
+                for (const auto& [unit, texture] : input.textures) d.textures.emplace_back(unit, builder.read(texture));
         },
-        [this, &context, &shadows, w, h](const PassResources& resources, const Data& d) {
+        [&context, &shadows, programId, w, h](const PassResources& resources, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.color), 0);
             glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, resources.id(d.depth), 0);
@@ -36,18 +49,20 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
             const float clearDepth = 0.0f;  // reversed Z: 0 is infinitely far
             glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
 
-            glUseProgram(program_.id());
+            glUseProgram(programId);
             context.frameData->bind();
+            for (const auto& input : context.meshShading)
+                if (input.bind) input.bind();
             if (d.shadowMap.valid()) {
                 glBindTextureUnit(kShadowMapUnit, resources.id(d.shadowMap));
                 glBindSampler(kShadowMapUnit, shadows.compareSampler_.id());
             }
-            if (d.slices.valid()) glBindTextureUnit(kTransmittanceUnit, resources.id(d.slices));
+            for (const auto& [unit, texture] : d.textures) glBindTextureUnit(unit, resources.id(texture));
             glEnable(GL_DEPTH_TEST);
             glDepthFunc(GL_GREATER);
             glDepthMask(GL_TRUE);
             glDisable(GL_BLEND);
-            drawInstances(context, program_.id(), {.normalMatrixLocation = 1, .cullSingleSided = true, .bindMaterial = true});
+            drawInstances(context, programId, {.normalMatrixLocation = 1, .cullSingleSided = true, .bindMaterial = true});
             glBindSampler(kShadowMapUnit, 0);
             glDisable(GL_CULL_FACE);
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,4 +1,7 @@
 #pragma once
+#include <map>
+#include <string>
+#include <vector>
 // The engine's own passes (one .cpp and one set of .glsl files each).
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/render/fullscreen.h"
@@ -25,7 +28,9 @@ public:
     void add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows);
 
 private:
-    gpu::Program program_;
+    // The program with the extensions' mesh shading defines, compiled when first asked for.
+    const gpu::Program& program(const std::vector<MeshShadingInput>& inputs);
+    std::map<std::vector<std::string>, gpu::Program> programs_;
 };
 
 // media over opaque into the persistent output (DESIGN.md §3 step 4).

@@ -66,7 +66,7 @@ void SceneRenderer::render(const FrameInput& input, const RenderSettings& reques
 
     // Everything the shaders read per frame is known once setup is done.
     frameData_.update(context.view, input.environment, input.lights, context.shadowViews, settings.shadowMapSize,
-                      settings.pcfRadius, &context.transmittance);
+                      settings.pcfRadius);
     graph.compile();
     graph.execute(timer);
     lastPasses_ = graph.activePasses();

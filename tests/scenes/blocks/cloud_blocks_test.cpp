@@ -3,7 +3,7 @@
 // cloud (the seam billboards leave), where block_shading=seam shades exactly, a fixed block count,
 // and repeatability.
 #include "../render_fixture.h"
-#include "block_passes.h"
+#include "blocks/block_seam_mask_pass.h"
 #include "blocks_scene_fixture.h"
 
 namespace nimbus::test {

@@ -3,6 +3,7 @@
 // renderer) without media, that a scene with a bad media extension leaves no entity behind, and
 // that gatherParticles after stepping the App is bit for bit media::particlesAtTime (the path of
 // hosts without the ECS, and of the reference renderer's `--time`). No GL: rendering stays off.
+#include "nimbus/media/nimbus/assets_document.h"
 #include "nimbus/media/ecs/media_plugin.h"
 
 #include <gtest/gtest.h>
@@ -115,7 +116,7 @@ TEST_F(MediaPluginTest, AddingThePluginTwiceIsHarmless) {
     scene::simulateTo(app, 1.0);
     ParticleSet gathered;
     gatherParticles(world(), gathered);
-    const ParticleSet expected = particlesAtTime(*scene, parseMediaScene(*scene), 1.0);
+    const ParticleSet expected = particlesAtTime(AssetsDocument(*scene), parseMediaScene(AssetsDocument(*scene)), 1.0);
     EXPECT_EQ(gathered.size(), expected.size()) << "emitters stepped once per update, not twice";
 }
 
@@ -165,9 +166,9 @@ TEST_F(MediaPluginTest, WithMediaTheRendererIsMadeAndRegistered) {
     const auto& state = app.resource<MediaRendererState>();
     ASSERT_NE(state.renderer, nullptr);
     const auto& list = app.resource<render::RenderExtensions>().list;
-    EXPECT_EQ(std::count(list.begin(), list.end(), state.renderer.get()), 1);
+    EXPECT_EQ(std::count(list.begin(), list.end(), state.extension.get()), 1);
     app.update();
-    EXPECT_EQ(std::count(list.begin(), list.end(), state.renderer.get()), 1) << "registered once, not per frame";
+    EXPECT_EQ(std::count(list.begin(), list.end(), state.extension.get()), 1) << "registered once, not per frame";
 }
 
 // A valid scene with one node's media extension replaced by `bad`.
@@ -330,7 +331,7 @@ void expectGatherEqualsParticlesAtTime(const std::filesystem::path& path, double
     scene::simulateTo(app, time);
     ParticleSet gathered;
     gatherParticles(app.world(), gathered);
-    const ParticleSet expected = particlesAtTime(*scene, parseMediaScene(*scene), time);
+    const ParticleSet expected = particlesAtTime(AssetsDocument(*scene), parseMediaScene(AssetsDocument(*scene)), time);
     EXPECT_GT(expected.size(), 10u) << path.filename() << ": the comparison needs particles";
     expectBitIdentical(gathered, expected, path.filename().string() + " at t=" + std::to_string(time));
 }

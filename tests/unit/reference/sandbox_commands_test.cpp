@@ -11,6 +11,7 @@
 #include "gltf_fixture.h"
 #include "nimbus/assets/image_io.h"
 #include "nimbus/assets/scene_queries.h"
+#include "nimbus/media/nimbus/assets_document.h"
 #include "nimbus/media/media_scene.h"
 #include "nimbus/media/reference/image_metrics.h"
 #include "nimbus/media/reference/reference_renderer.h"
@@ -67,9 +68,9 @@ TEST(SandboxReference, WritesTheSameImageAsTheLibrary) {
     ASSERT_EQ(written.height, 18);
 
     const assets::Scene loaded = assets::loadScene(scene);
-    const MediaScene media = parseMediaScene(loaded);
+    const MediaScene media = parseMediaScene(AssetsDocument(loaded));
     const auto world = assets::computeWorldTransforms(loaded, 0.0);
-    const ParticleSet particles = particlesAtTime(loaded, media, 0.0);
+    const ParticleSet particles = particlesAtTime(AssetsDocument(loaded), media, 0.0);
     reference::ReferenceInputs in;
     in.scene = &loaded;
     in.world = &world;

@@ -10,6 +10,7 @@
 #include "nimbus/base/settings.h"
 #include "nimbus/ecs/frame_info.h"
 #include "nimbus/media/emitter_scene.h"
+#include "nimbus/media/nimbus/assets_document.h"
 #include "nimbus/render/render_plugin.h"
 #include "nimbus/scene/components.h"
 #include "nimbus/scene/scene_plugin.h"
@@ -54,7 +55,7 @@ void applyRenderOverrides(World& world, const assets::Scene& scene, const MediaS
 }
 
 void spawnMedia(World& world, const assets::Scene& scene) {
-    const MediaScene media = parseMediaScene(scene);  // throws before anything is added
+    const MediaScene media = parseMediaScene(AssetsDocument(scene));  // throws before anything is added
     if (media.empty()) return;
     // A refused scene must leave no setting behind either (spawnScene undoes the entities).
     std::optional<Settings> before;
@@ -81,7 +82,7 @@ void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaSce
         if (!node.localPositions.empty())
             world.emplace<ParticleCloud>(e, ParticleCloud{node.localPositions, node.radii, node.densities});
         if (!node.emitter.is_null())
-            world.emplace<EmitterComponent>(e, EmitterComponent{EmitterSimulation(parseNodeEmitter(scene, node), node.node),
+            world.emplace<EmitterComponent>(e, EmitterComponent{EmitterSimulation(parseNodeEmitter(AssetsDocument(scene), node), node.node),
                                                                 world.get<scene::Transform>(e).world});
     }
 }
@@ -114,9 +115,12 @@ void renderSystem(World& world) {
     auto& list = extensions->list;
     const bool active = !frame.particles.empty();
     if (!active && !state.renderer) return;
-    if (!state.renderer) state.renderer = std::make_unique<MediaRenderer>();
-    auto registered = std::find(list.begin(), list.end(), state.renderer.get());
-    if (active && registered == list.end()) list.push_back(state.renderer.get());
+    if (!state.renderer) {
+        state.renderer = std::make_unique<MediaRenderer>();
+        state.extension = std::make_unique<MediaRenderExtension>(*state.renderer);
+    }
+    auto registered = std::find(list.begin(), list.end(), state.extension.get());
+    if (active && registered == list.end()) list.push_back(state.extension.get());
     if (!active && registered != list.end()) list.erase(registered);
     state.renderer->prepare(frame.particles, frame.settings);
 }

@@ -93,12 +93,15 @@ class Texture {
 public:
     Texture() = default;
     explicit Texture(const TextureDesc& desc);  // allocates immutable storage with default sampling state
-    GLuint id() const { return handle_.id(); }
+    // A texture someone else owns (a host's depth buffer), described by `desc`; never deleted here.
+    static Texture borrow(GLuint name, const TextureDesc& desc);
+    GLuint id() const { return handle_ ? handle_.id() : borrowed_; }
     const TextureDesc& desc() const { return desc_; }
-    explicit operator bool() const { return static_cast<bool>(handle_); }
+    explicit operator bool() const { return id() != 0; }
 
 private:
     GlObject<TextureTraits> handle_;
+    GLuint borrowed_ = 0;
     TextureDesc desc_;
 };
 

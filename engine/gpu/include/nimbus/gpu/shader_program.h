@@ -19,6 +19,9 @@ struct ProgramDesc {
     std::string compute;
     std::vector<std::string> defines;  // "NAME" or "NAME VALUE", inserted after #version
     std::filesystem::path folder;      // empty means nimbus::shaderDirectory()
+    // Further folders #include searches after `folder`, in order (a host's shaders including the
+    // plugin's "media/host/..." files from nimbus::shaderDirectory()).
+    std::vector<std::filesystem::path> includePath;
 };
 
 // A preprocessed stage: the text GL compiles plus the files it came from (index = #line source number).
@@ -29,7 +32,8 @@ struct PreprocessedSource {
 
 // Resolves #include and injects defines; throws nimbus::SystemError for a missing file or a cycle.
 PreprocessedSource preprocessShader(const std::filesystem::path& folder, const std::string& file,
-                                    const std::vector<std::string>& defines);
+                                    const std::vector<std::string>& defines,
+                                    const std::vector<std::filesystem::path>& includePath = {});
 
 // Rewrites a driver log ("0:12(5): error: ...") with file names ("opaque.frag:12(5): error: ...").
 std::string mapShaderLog(const std::string& log, const std::vector<std::string>& files);

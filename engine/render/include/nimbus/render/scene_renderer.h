@@ -5,6 +5,7 @@
 //
 // Does not: own the scene or the camera (the caller passes a FrameInput each frame), present to a
 // window (the editor blits output()), or encode images (assets/image_io does).
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -13,14 +14,21 @@
 #include "nimbus/assets/scene.h"
 #include "nimbus/assets/scene_queries.h"
 #include "nimbus/assets/image_io.h"
+#include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/texture_pool.h"
 #include "nimbus/render/frame_data.h"
-#include "nimbus/render/frame_graph.h"
 #include "nimbus/render/gpu_scene.h"
 #include "nimbus/render/light_views.h"
-#include "nimbus/render/texture_pool.h"
 #include "nimbus/render/view.h"
 
 namespace nimbus::render {
+
+using gpu::FrameGraph;
+using gpu::PassBuilder;
+using gpu::PassResources;
+using gpu::PassTimer;
+using gpu::ResourceHandle;
+using gpu::TexturePool;
 
 // Zero values take the defaults noted.
 struct RenderSettings {
@@ -48,6 +56,15 @@ struct TranslucentLayer {
     float edgeThreshold = 0.2f;  // relative depth difference the upsampling treats as an edge
 };
 
+// What an extension adds to the opaque pass's mesh shading (the media plugin: its light slices,
+// through its GLSL host include): a define that shaders/opaque.frag tests to include it, the
+// textures it samples (unit, resource) and a step that binds its uniform blocks.
+struct MeshShadingInput {
+    std::string define;
+    std::vector<std::pair<GLuint, ResourceHandle>> textures;
+    std::function<void()> bind;
+};
+
 // What the passes of one frame share while the graph is set up.
 struct FrameContext {
     const FrameInput& input;
@@ -56,12 +73,11 @@ struct FrameContext {
     assets::Aabb meshBounds;    // world
     assets::Aabb shadowBounds;  // world: meshes plus what extensions draw
     std::vector<std::vector<LightView>> shadowViews;  // per light
-    TransmittanceSlices transmittance;                // filled by an extension before the opaque pass
     ResourceHandle shadowMap;                         // depth array, one layer per shadow view (may be invalid)
     ResourceHandle sceneColor;                        // opaque radiance (RGBA32F)
     ResourceHandle sceneDepth;                        // reversed-Z depth (D32F)
-    ResourceHandle transmittanceSlices;               // set by the extension that fills `transmittance`
-    TranslucentLayer overlay;                         // set by an extension (the media): composed over the opaque scene
+    std::vector<MeshShadingInput> meshShading;        // added by extensions before the opaque pass
+    TranslucentLayer overlay;                         // set by an extension after it: composed over the opaque scene
     const FrameData* frameData = nullptr;
 };
 

@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "nimbus/media/block_partition.h"
-#include "nimbus/render/light_views.h"
+#include "nimbus/gpu/light_views.h"
 
 namespace nimbus::media {
 
@@ -58,13 +58,11 @@ std::vector<BlockFootprint> blockFootprints(const BlockPartition& partition, con
 // pixel grid), as the composite, `particles` mode and the reference do.
 // Why 4: a particle is a Gaussian of deviation σ = R/3, and bilinear reconstruction from texels h
 // apart errs by up to h²/(8σ²) of its peak: 7% at 4 texels per radius, 28% at 2, and a particle
-// under one texel is lost or spread. (Measured on phase_away_from_sun, where g = −0.99 magnifies
-// any error in optical depth: 35% at 2, 7.9% at 4; cumulus at 1280×720 is unchanged.)
-// Why the overdraw: where particles overlap, their sum curves far less than one kernel does, and
-// half density costs cloud.gltf nothing in error; a lone particle keeps the full h²/(8σ²) (0.8% at
-// 20 texels per radius, which a g = 0.99 phase peak made 20% of its image's mean: tests/stability
-// unseen variant 04). At one layer or less, one texel per pixel costs the impostor pass at most as
-// many fragments as the composite already draws for the block.
+// under one texel is lost or spread (docs/design-notes.md).
+// Why the overdraw: where particles overlap, their sum curves far less than one kernel does; a lone
+// particle keeps the full h²/(8σ²), which a sharp phase peak magnifies (docs/design-notes.md). At one
+// layer or less, one texel per pixel costs the impostor pass at most as many fragments as the
+// composite already draws for the block.
 inline constexpr float kResolvedParticleTexels = 4.0f;
 inline constexpr float kPerPixelOverdraw = 1.0f;
 std::vector<glm::ivec2> tileSizes(const std::vector<BlockFootprint>& footprints, const glm::ivec2& viewport, float scale);

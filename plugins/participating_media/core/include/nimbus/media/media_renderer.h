@@ -1,17 +1,23 @@
 #pragma once
-// The participating media in the real-time frame (DESIGN.md §3), as a render extension any host can
-// plug into render::SceneRenderer: before the opaque pass it renders the light slices (medium
-// optical depth from each light, which also shadows the meshes); after it, the medium itself in the
-// chosen mode into an offscreen target that the compose pass puts over the scene.
+// The participating media in the real-time frame (DESIGN.md §3), through the host contract
+// (host.h): before the host's opaque pass it renders the light slices (medium optical depth from
+// each light, which also shadows the meshes); after it, the medium itself in the chosen mode into
+// an offscreen layer the host composes over its scene.
 //
-// Does not: simulate (emitters fill the ParticleSet), own a GL context, or know about the ECS.
+// Does not: simulate (emitters fill the ParticleSet), own a GL context, or know any host's ECS,
+// scene or renderer.
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "nimbus/base/aabb.h"
+#include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/texture_pool.h"
+#include "nimbus/gpu/view.h"
+#include "nimbus/media/host.h"
+#include "nimbus/media/graph_frame.h"
 #include "nimbus/media/particle_set.h"
-#include "nimbus/render/scene_renderer.h"
 
 namespace nimbus::media {
 
@@ -24,7 +30,7 @@ enum class MediaMode { Particles, Blocks, Billboards };
 // compositing order of overlapping blocks corrected; smoothly is at two points of each block's
 // depth profile, as everywhere else.
 enum class BlockShading : std::uint8_t {
-    Smooth,  // smoothly everywhere: fastest, but can show a seam (1 generated scene in 9)
+    Smooth,  // smoothly everywhere: fastest, but can show a seam (docs/design-notes.md)
     Seam,    // exactly near the texels where a mesh lies among the particles, smoothly elsewhere
     Exact,   // exactly over those blocks' whole rectangles
 };
@@ -57,12 +63,12 @@ struct MediaRenderSettings {
     // With per-particle lighting: shade a frame per fragment after all where a lamp lies inside the
     // medium (lampInsideMedium). Around it 1/d² peaks across overlapping particles, and how much of
     // each lies in front of the lamp decides what the compositing order gets wrong, which only the
-    // exact tier's lamp neighbourhoods correct (a lamp in a τ 3 cloud: 49% per particle, 7% exact).
+    // exact tier's lamp neighbourhoods correct (docs/design-notes.md).
     bool exactNearLamps = false;
     bool softParticles = true; // clip each particle's kernel at the opaque surface (off: billboard plane test)
     bool layerLight = true;    // particles mode: integrate the light's transmittance over each particle's layer
-                               // (off: take it at one point: up to 26% less frame time in docs/PERFORMANCE.md,
-                               // less exact for dense particles)
+                               // (off: take it at one point: faster (docs/PERFORMANCE.md), less exact for
+                               // dense particles)
     int blocks = 0;            // blocks mode: block count; 0: automatic (block_partition.h)
     float impostorScale = 0.0f;  // blocks mode: impostor texels per covered pixel; 0: 0.5
     bool instancing = false;   // blocks mode: one block prototype instanced at every block (seed 000 §2's b + N/b)
@@ -73,6 +79,11 @@ struct MediaRenderSettings {
                                   // lamp lies among them (its peak is pixels wide), else 1
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2 (common/upsample.glsl)
 };
+
+// The settings with each zero field that stands for a value given it (sliceResolution 256,
+// impostorScale 0.5, mediaScale 1, upsampleThreshold 0.2); where zero means "choose" (slices,
+// blocks) it stays. MediaRenderer::prepare applies it, so a host may pass {} or only what it sets.
+MediaRenderSettings withDefaults(MediaRenderSettings settings);
 
 struct MediaFrameStats {
     std::size_t particles = 0;
@@ -96,45 +107,67 @@ class BlockGpuBuffers;
 class BlockImpostorRenderer;
 class BlockCompositePass;
 class BlockSlicePass;
+class BlockLampSlicePass;
 class MediaDepthUsedPass;
 class ParticleLightingPass;
 class LightSliceDepositPass;
 class SplatFloor;
+class FrameBlocks;
+struct ImmediateFrame;
 class BillboardPass;
 class LightSlicePrefixPass;
 class ParticleSplatPass;
 struct BlockFrame;
+struct SliceView;
+struct MediaTarget;
 struct BlockViewPlan;
 struct ImpostorView;
 
-class MediaRenderer final : public render::RenderExtension {
+class MediaRenderer final {
 public:
     MediaRenderer();
-    ~MediaRenderer() override;
+    ~MediaRenderer();
     MediaRenderer(const MediaRenderer&) = delete;
     MediaRenderer& operator=(const MediaRenderer&) = delete;
 
     // The medium to draw this frame. Keeps a reference: `particles` must outlive the frame.
     void prepare(const ParticleSet& particles, const MediaRenderSettings& settings);
+    // World bounds of the particles: a host's shadow maps must cover them too.
+    Aabb bounds() const { return bounds_; }
 
-    assets::Aabb bounds() const override { return bounds_; }
-    void beforeOpaque(render::FrameGraph& graph, render::FrameContext& context) override;
-    void afterOpaque(render::FrameGraph& graph, render::FrameContext& context) override;
+    // In a host's frame graph (graph_frame.h): the light slices before the opaque pass, the medium after it.
+    void addLightSlices(gpu::FrameGraph& graph, GraphFrame& frame);
+    void addMedia(gpu::FrameGraph& graph, GraphFrame& frame);
+
+    // For hosts without a frame graph: each call runs its passes now on a graph of the plugin's own.
+    // Call both every frame, in this order; their results stay valid until the same call next frame.
+    LightSlices renderLightSlices(const HostFrame& frame, gpu::PassTimer* timer = nullptr);
+    MediaLayer renderMedia(const HostFrame& frame, gpu::PassTimer* timer = nullptr);
 
     const MediaFrameStats& stats() const { return stats_; }
+    // The MediaSliceViews uniform block's buffer (LightSlices::views), for graph hosts. 0 before the first frame.
+    GLuint sliceViewsBlock() const;
 
     // The splat floor of the last rendered frame's particles seen through `view` (splat_floor.h):
     // median ms of `repeats` GPU-synchronised draws. 0 before anything was drawn.
-    double measureSplatFloor(const render::View& view, int repeats = 20);
+    double measureSplatFloor(const gpu::View& view, int repeats = 20);
 
 private:
-    float impostorScale() const;
+    void planTarget(const GraphFrame& frame);
+    void partitionBlocks(const GraphFrame& frame);
+    void planBlockCamera(const GraphFrame& frame);
+    void addUploadPass(gpu::FrameGraph& graph, GraphFrame& frame);
+    int planSliceViews(const GraphFrame& frame, std::vector<SliceView>& views, std::vector<glm::ivec2>& perLight);
     // `notDrawn`: per block, 1 where this view leaves its tile out (planBlockView).
     BlockViewPlan planFor(const ImpostorView& view, const glm::dvec3& origin, const std::vector<std::uint8_t>& notDrawn) const;
 
     const ParticleSet* particles_ = nullptr;
     MediaRenderSettings settings_;
-    assets::Aabb bounds_;
+    Aabb bounds_;
+    std::unique_ptr<FrameBlocks> blocks_;
+    std::unique_ptr<MediaTarget> target_;  // this frame's media target (planTarget)
+    double coverage_ = 0.0;                // how many times over the billboards cover the image
+    std::unique_ptr<ImmediateFrame> immediate_;  // renderLightSlices/renderMedia's graph state
     MediaFrameStats stats_;
     // GPU objects exist only once something is drawn ("model only what a scene needs").
     std::unique_ptr<ParticleGpuBuffer> buffer_;
@@ -149,6 +182,7 @@ private:
     std::unique_ptr<BlockImpostorRenderer> impostorRenderer_;
     std::unique_ptr<BlockCompositePass> blockCompositePass_;
     std::unique_ptr<BlockSlicePass> blockSlicePass_;
+    std::unique_ptr<BlockLampSlicePass> lampSlicePass_;
     std::unique_ptr<MediaDepthUsedPass> depthUsedPass_;
     std::unique_ptr<SplatFloor> splatFloor_;
     std::unique_ptr<BillboardPass> billboardPass_;
@@ -161,32 +195,31 @@ struct SplatFootprint {
     double coverage = 0.0;
     double radiusPixels = 0.0;
 };
-SplatFootprint splatFootprint(const ParticleSet& particles, const render::View& view);
+SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& view);
 
 // media_scale=auto: 1 unless the billboards cover the image more than kHalfScaleCoverage times
 // over (fill dominates) and no lamp lies among them; then as low as keeps kAutoScaleRadiusTexels
 // across a typical billboard's half size, within [¼, ½]. The kernel is smooth over a billboard,
-// so the depth-aware upsampling loses next to nothing there (cloud.gltf at 720p: 0.04% between
-// media_scale 1 and 0.35).
+// so the depth-aware upsampling loses next to nothing there (docs/design-notes.md).
 float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles);
 inline constexpr double kHalfScaleCoverage = 2.5;
 inline constexpr double kAutoScaleRadiusTexels = 8.0;
 // Below this many billboard pixels per particle, per-particle lighting takes one ray per particle:
-// at 16, jet.gltf at 192×108 (16 px per particle) doubled its error to 5%.
+// a fit across them has nothing to follow (docs/design-notes.md).
 inline constexpr double kConstantSplatPixels = 2.0;
 
 // Whether a point or spot light lies inside `bounds` (the particles').
-bool lampAmongParticles(const std::vector<assets::ResolvedLight>& lights, const assets::Aabb& bounds);
+bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds);
 
 // Whether a point or spot light lies inside a particle that takes more than a tenth of a ray
 // through its centre (a column over kLampMediumColumn): MediaRenderSettings::exactNearLamps.
 inline constexpr double kLampMediumColumn = 0.1;
-bool lampInsideMedium(const ParticleSet& particles, const std::vector<assets::ResolvedLight>& lights, const glm::dvec3& origin);
+bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& lights);
 
 // Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
-bool eyeInsideMedium(const ParticleSet& particles, const render::View& view);
+bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view);
 
 // World bounds of the particle spheres.
-assets::Aabb particleBounds(const ParticleSet& particles);
+Aabb particleBounds(const ParticleSet& particles);
 
 }  // namespace nimbus::media

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "nimbus/media/particle_set.h"
-#include "nimbus/render/light_views.h"
+#include "nimbus/gpu/light_views.h"
 
 namespace nimbus::media {
 
@@ -34,10 +34,10 @@ struct SliceEstimate {
 // The slice resolution that puts `texelsPerRadius` texels across the median particle's radius
 // (slice_resolution=auto), a multiple of 16 in [32, 256]: a lamp's cube faces need far fewer
 // texels than the fixed 256 where its particles subtend degrees.
-int sliceResolutionFor(const SliceEstimate& estimate, const render::LightView& view, double texelsPerRadius);
+int sliceResolutionFor(const SliceEstimate& estimate, const gpu::LightView& view, double texelsPerRadius);
 
 // `view` is a light view of the medium; `origin` the frame origin its matrices are relative to.
-SliceEstimate estimateSlices(const ParticleSet& particles, const render::LightView& view, const glm::dvec3& origin);
+SliceEstimate estimateSlices(const ParticleSet& particles, const gpu::LightView& view, const glm::dvec3& origin);
 
 // The deposit form of the slices (light_slice_deposit_pass.cpp): every particle is drawn once into
 // each slab, between two consecutive slice planes, that its sphere reaches. Slab k spans view depth
@@ -52,7 +52,7 @@ struct SlabRange {
 SlabRange particleSlabs(double depth, double radius, bool perspective, double depthNear, double depthFar, int slices);
 
 // Appends the pieces of one view (particle << kSlabBits | slab), in particle order.
-void appendSlabPieces(const ParticleSet& particles, const render::LightView& view, const glm::dvec3& origin, int slices,
+void appendSlabPieces(const ParticleSet& particles, const gpu::LightView& view, const glm::dvec3& origin, int slices,
                       std::vector<std::uint32_t>& pieces);
 
 }  // namespace nimbus::media

@@ -4,7 +4,7 @@
 //   components  Medium, ParticleCloud, Emitter
 //   Simulate    media.emit          steps every emitter with its node's transform at both step ends
 //   Prepare     media.light_slices  gathers the particle set and plans the light slices
-//   Render      media.render        hands the frame to the MediaRenderer (a RenderExtension)
+//   Render      media.render        hands the frame to the MediaRenderer (through MediaRenderExtension)
 // and a scene spawner that reads each node's NIMBUS_participating_media object.
 // Every system returns at once, allocating nothing, when no entity has its components.
 #include <memory>
@@ -18,6 +18,7 @@
 #include "nimbus/ecs/plugin.h"
 #include "nimbus/media/emitter_simulation.h"
 #include "nimbus/media/media_renderer.h"
+#include "nimbus/media/nimbus/media_render_extension.h"
 #include "nimbus/media/media_scene.h"
 #include "nimbus/media/particle_set.h"
 #include "nimbus/media/slice_plan.h"
@@ -93,6 +94,7 @@ struct MediaFrame {
 // Resource: the real-time renderer; created on the first frame that has something to draw.
 struct MediaRendererState {
     std::unique_ptr<MediaRenderer> renderer;
+    std::unique_ptr<MediaRenderExtension> extension;  // the renderer in Nimbus's frame graph
 };
 
 class MediaPlugin final : public nimbus::ecs::Plugin {

@@ -1,0 +1,52 @@
+#pragma once
+// Every binding point of the media plugin's shaders (GLSL twin: shaders/media/bindings.glsl; a test
+// checks each against the compiled programs), and the one block a host's mesh shader shares with
+// it: MediaSliceViews (shaders/media/host/light_transmittance.glsl).
+//
+// The plugin binds, before each of its draws, its own copies of the blocks of gpu/frame_layout.h
+// (Frame 0, Lights 1, ShadowViews 2) packed from the HostFrame: a host's own blocks at those points
+// are overwritten while the plugin runs, and must be rebound by the host afterwards.
+#include <cstddef>
+
+#include <glm/glm.hpp>
+
+#include "nimbus/gpu/frame_layout.h"
+
+namespace nimbus::media {
+
+// Shared with the host's mesh shader (a host may move them: LightSlices::bind(binding, unit)).
+inline constexpr GLuint kSliceViewsBinding = 3;  // MEDIA_SLICE_VIEWS_BINDING (uniform block)
+inline constexpr GLuint kSlicesUnit = 2;         // MEDIA_SLICES_UNIT (sampler2DArray)
+inline constexpr std::size_t kMaxHostLights = gpu::kMaxLights;  // MEDIA_MAX_LIGHTS
+
+// Texture units.
+inline constexpr GLuint kSlabsUnit = 0;           // MEDIA_SLABS_UNIT
+inline constexpr GLuint kSceneDepthUnit = 3;      // MEDIA_SCENE_DEPTH_UNIT
+inline constexpr GLuint kShadowDepthUnit = 4;     // MEDIA_SHADOW_DEPTH_UNIT
+inline constexpr GLuint kImpostorDepthsUnit = 5;  // MEDIA_IMPOSTOR_DEPTHS_UNIT
+inline constexpr GLuint kImpostorSums1Unit = 6;   // MEDIA_IMPOSTOR_SUMS1_UNIT
+inline constexpr GLuint kKernelTableUnit = 6;     // MEDIA_KERNEL_TABLE_UNIT (never with the impostors)
+inline constexpr GLuint kImpostorSums2Unit = 7;   // MEDIA_IMPOSTOR_SUMS2_UNIT
+inline constexpr GLuint kImpostorMomentsUnit = 8; // MEDIA_IMPOSTOR_MOMENTS_UNIT
+inline constexpr GLuint kSliceImpostorMomentsUnit = 6;  // MEDIA_SLICE_IMPOSTOR_MOMENTS_UNIT (block_slices.frag)
+inline constexpr GLuint kSeamMaskUnit = 9;        // MEDIA_SEAM_MASK_UNIT
+
+// Storage buffers.
+inline constexpr GLuint kParticlesBinding = 3;           // MEDIA_PARTICLES_BINDING
+inline constexpr GLuint kDrawOrderBinding = 5;           // MEDIA_DRAW_ORDER_BINDING
+inline constexpr GLuint kImpostorItemsBinding = 6;       // MEDIA_IMPOSTOR_ITEMS_BINDING
+inline constexpr GLuint kBlockTilesBinding = 7;          // MEDIA_BLOCK_TILES_BINDING
+inline constexpr GLuint kLampNeighbourhoodBinding = 8;   // MEDIA_LAMP_NEIGHBOURHOODS_BINDING
+inline constexpr GLuint kLampSliceParticlesBinding = 9;  // MEDIA_LAMP_SLICE_PARTICLES_BINDING
+inline constexpr GLuint kParticleLightBinding = 10;      // MEDIA_PARTICLE_LIGHT_BINDING
+inline constexpr GLuint kBlockNeighboursBinding = 10;    // MEDIA_BLOCK_NEIGHBOURS_BINDING (blocks mode only)
+inline constexpr GLuint kSlicePiecesBinding = 11;        // MEDIA_SLICE_PIECES_BINDING
+
+// The MediaSliceViews uniform block.
+struct alignas(16) GpuSliceViews {
+    glm::ivec4 count;                           // x: slice views this frame
+    glm::ivec4 perLight[kMaxHostLights];        // x: first view (−1: none), y: view count
+    gpu::GpuLightView views[gpu::kMaxLightViews];
+};
+
+}  // namespace nimbus::media

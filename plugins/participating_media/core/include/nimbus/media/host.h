@@ -1,0 +1,89 @@
+#pragma once
+// The host contract of the participating-media plugin (docs/integration.md): what a host engine
+// gives the plugin each frame, as plain data and GL names, and what it gets back. The plugin packs
+// its own uniform blocks from this data; it never reads the host's.
+//
+// A frame, in the host's order:
+//   1. media::MediaRenderer::prepare(particles, settings)  — the particles to draw (simulated by the
+//      plugin's EmitterSimulation or given by the host), and the settings.
+//   2. renderLightSlices(frame)  — before the host's opaque pass: the medium's optical depth towards
+//      each light. The host's mesh shader includes "media/host/light_transmittance.glsl" and
+//      multiplies each light by mediaTransmittance(light, lightPosition, p), after
+//      LightSlices::bind(): smoke then casts shadows on the host's meshes.
+//   3. renderMedia(frame)  — after it, with frame.sceneDepth: the medium, into MediaLayer.
+//   4. The host composes: pixel = layer.rgb + layer.a · opaque (premultiplied radiance, view
+//      transmittance), upsampling with "common/upsample.glsl" when MediaLayer::depthUsed is set.
+//
+// Conventions: positions sent to the GPU are relative to HostFrame::camera.origin (double on the
+// CPU), the camera projection and every depth texture are reversed Z with [0, 1] clip depth
+// (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), depth 1 at the near plane, cleared to 0).
+//
+// Does not: create a GL context, draw the host's meshes, present, or restore GL state: it binds its
+// own programs, framebuffers, blocks (gpu/frame_layout.h points 0–2 included) and blend state, and
+// the host sets what its next pass needs.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "nimbus/base/aabb.h"
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/gpu/light_views.h"
+#include "nimbus/gpu/view.h"
+
+namespace nimbus::media {
+
+// A punctual light in world space (KHR_lights_punctual resolved): kind, position or direction,
+// radiance = colour × intensity, range, spot cone.
+using Light = gpu::PunctualLight;
+
+// The host's mesh shadow maps, optional. The media read them so smoke is shadowed by meshes.
+struct HostShadowMaps {
+    GLuint texture = 0;  // GL_TEXTURE_2D_ARRAY of GL_DEPTH_COMPONENT32F, reversed Z, one layer per view
+    int size = 0;        // texels per side
+    int pcfRadius = 1;   // the host's PCF radius (the media's smooth shadow does not use it)
+    // Per light, in HostFrame::lights order, its views in layer order (empty: no shadow map). Views
+    // from gpu::makeLightViews around the meshes plus MediaRenderer::bounds() cover everything.
+    std::vector<std::vector<gpu::LightView>> views;
+};
+
+// A mesh's bounds in world space for `blocks` mode: its local box carried by the mesh's rotation
+// and scale (a wing tilted through a cloud has an axis-aligned box as big as the cloud), or, where
+// the transform shears, the axis-aligned box around that.
+struct OccluderBox {
+    glm::dvec3 centre{0.0};
+    glm::dvec3 axis[3] = {glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(0.0, 0.0, 1.0)};  // orthonormal
+    glm::dvec3 half{0.0};  // half extents along the axes
+};
+OccluderBox occluderBox(const glm::dmat4& world, const glm::dvec3& localMin, const glm::dvec3& localMax);
+
+struct HostFrame {
+    gpu::View camera;           // viewport = camera.width × camera.height
+    std::vector<Light> lights;  // at most kMaxHostLights; indices match the host's mesh shader
+    glm::vec3 ambient{0.0f};    // L_amb, radiance every particle scatters (DESIGN.md §2)
+    glm::vec3 background{0.0f}; // what rays that hit nothing see
+    GLuint sceneDepth = 0;      // GL_TEXTURE_2D depth of the opaque scene (renderMedia; 0: no media drawn)
+    const HostShadowMaps* shadows = nullptr;
+    // World boxes of the host's meshes: `blocks` mode shades the blocks they reach exactly. Empty:
+    // blocks mode treats the medium as free of meshes (a seam may show where one is seen inside).
+    std::vector<OccluderBox> occluders;
+};
+
+// What renderLightSlices returns; valid until the next renderLightSlices.
+struct LightSlices {
+    GLuint texture = 0;  // GL_TEXTURE_2D_ARRAY RGBA32F, four slices per layer; 0: none this frame
+    GLuint views = 0;    // the MediaSliceViews uniform block (nimbus/media/gpu_bindings.h)
+    // Binds both at the points the host include expects (kSliceViewsBinding, kSlicesUnit, or the
+    // host's own MEDIA_SLICE_VIEWS_BINDING / MEDIA_SLICES_UNIT). Harmless when there are none.
+    void bind(GLuint viewsBinding, GLuint slicesUnit) const;
+    void bind() const;
+};
+
+// What renderMedia returns; valid until the next renderMedia.
+struct MediaLayer {
+    GLuint color = 0;       // RGBA16F/32F, `size`: rgb premultiplied in-scattered radiance, a view transmittance
+    GLuint depthUsed = 0;   // R32F view depth per texel when size is below the viewport, else 0
+    glm::ivec2 size{0};
+    float edgeThreshold = 0.2f;  // relative depth difference the depth-aware upsampling treats as an edge
+};
+
+}  // namespace nimbus::media

@@ -1,0 +1,62 @@
+// `billboards` mode, the yardstick of docs/PERFORMANCE.md: what a typical engine ships. Sorted
+// camera-facing sprites, lit once per particle at the vertices with no volumetric self-shadowing
+// and no mesh shadows on the particles, one sprite fetch per fragment and soft particles
+// (shaders/media/billboards.*). Not a feature to tune: a measured baseline.
+#include "billboards/billboard_pass.h"
+
+#include "common/kernel_table.h"
+#include "frame/frame_blocks.h"
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/gpu/frame_layout.h"
+
+namespace nimbus::media {
+
+namespace {
+}
+
+BillboardPass::BillboardPass()
+    : program_(gpu::compileProgram({.vertex = "media/billboards.vert", .fragment = "media/billboards.frag"})),
+      kernelTable_(createKernelTable()) {}
+
+gpu::ResourceHandle BillboardPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
+                                          const MediaTarget& target) {
+    struct Data {
+        gpu::ResourceHandle media, depth;
+    };
+    const int w = target.size.x, h = target.size.y;
+    const auto& data = graph.addPass<Data>(
+        "media_billboards",
+        [&](gpu::PassBuilder& builder, Data& d) {
+            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.depth = builder.read(context.sceneDepth);
+        },
+        [this, &context, &buffer, w, h, scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
+            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            glViewport(0, 0, w, h);
+            const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // no radiance, full transmittance
+            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+            glUseProgram(program_.id());
+            context.blocks->bind();
+            buffer.bindParticles();
+            buffer.bindOrder();
+            glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
+            glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
+            glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
+            glDisable(GL_DEPTH_TEST);
+            glDisable(GL_CULL_FACE);
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            glBindVertexArray(vertexArray_.id());
+            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
+            glBindVertexArray(0);
+            glDisable(GL_BLEND);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.media;
+}
+
+}  // namespace nimbus::media

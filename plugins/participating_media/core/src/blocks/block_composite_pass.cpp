@@ -1,0 +1,163 @@
+// Blocks mode, camera side: the blocks composited back to front over their screen rectangles from
+// the camera's impostor atlas (block_impostor_pass.cpp), shaders/media/block_composite.*.
+#include "blocks/block_composite_pass.h"
+
+#include <algorithm>
+
+#include "frame/frame_blocks.h"
+#include "nimbus/media/gpu_bindings.h"
+#include "nimbus/gpu/frame_layout.h"
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::media {
+
+inline constexpr GLint kFirstRankLocation = 2;  // block_composite.vert uFirstRank
+inline constexpr GLint kSeamPartLocation = 3;   // block_composite.frag uSeamPart
+inline constexpr GLint kSeamCellLocation = 5;   // block_composite.frag uSeamCell
+
+BlockCompositePass::BlockCompositePass() { programs(kBlockPlain); }
+
+LocalLightPrograms& BlockCompositePass::programs(std::uint8_t build) {
+    std::unique_ptr<LocalLightPrograms>& programs = programs_[build & 7];
+    if (!programs) programs = std::make_unique<LocalLightPrograms>(blockCompositeDesc(build));
+    return *programs;
+}
+
+gpu::ProgramDesc blockCompositeDesc(std::uint8_t build) {
+    gpu::ProgramDesc desc{.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"};
+    if (build & kBlockExactCut) desc.defines.push_back("BLOCK_EXACT_CUT");
+    if (build & kBlockOwnParticles) desc.defines.push_back("BLOCK_OWN_PARTICLES");
+    if (build & kBlockExactShading) desc.defines.push_back("BLOCK_EXACT_SHADING");
+    return desc;
+}
+
+gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& made,
+                                               const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
+                                               bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
+                                               const MediaTarget& target) {
+    struct Composite {
+        gpu::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments, seamMask, seamStencil;
+    };
+    const int w = target.size.x, h = target.size.y;
+    // Runs of consecutive ranks that want the same build, drawn in order.
+    struct Run {
+        BlockRankRun ranks;
+        std::uint8_t build;
+    };
+    std::vector<Run> runs;
+    for (std::size_t r = 0; r < backToFront.size(); ++r) {
+        const std::uint8_t build = builds[backToFront[r]] & 7;
+        if (runs.empty() || build != runs.back().build) runs.push_back({{static_cast<GLint>(r), 0}, build});
+        ++runs.back().ranks.count;
+    }
+    // With seamOnly, the mask says where the blocks a mesh comes near are cut, and an exactly shaded
+    // run is drawn twice: smoothly off the seam, then exactly near it (the mask pass's stencil says
+    // which texels each draw shades). At each texel one of the two draws writes every block of the
+    // run, so the back-to-front order holds.
+    std::vector<BlockRankRun> cutRuns;
+    bool seamRuns = false;
+    for (const Run& run : runs) {
+        if (run.build & kBlockExactCut) cutRuns.push_back(run.ranks);
+        seamRuns = seamRuns || (run.build & kBlockExactShading);
+    }
+    struct Seam {
+        gpu::ResourceHandle mask, stencil;
+    } seam;
+    const int seamCell = seamMaskCell(target.size);
+    if (seamOnly && seamRuns && !cutRuns.empty()) {
+        if (!seamMask_) seamMask_ = std::make_unique<BlockSeamMaskPass>();
+        if (!seamStencil_) seamStencil_ = std::make_unique<BlockSeamStencilPass>();
+        seam.mask = seamMask_->add(graph, context, std::move(cutRuns), blocks, made.depths, target, seamCell);
+        seam.stencil = seamStencil_->add(graph, seam.mask, target, seamCell);
+    }
+    // Each draw: its ranks, program and seam part (block_composite.frag uSeamPart).
+    struct Draw {
+        BlockRankRun ranks;
+        const gpu::Program* program;
+        GLint seamPart;
+    };
+    std::vector<Draw> draws;
+    for (const Run& run : runs) {
+        const auto smooth = static_cast<std::uint8_t>(run.build & ~kBlockExactShading);
+        if (!seamOnly || !(run.build & kBlockExactShading)) {
+            draws.push_back({run.ranks, &programs(run.build).forLights(context.host.lights), 0});
+        } else if (seam.mask.valid()) {
+            draws.push_back({run.ranks, &programs(smooth).forLights(context.host.lights), 1});
+            draws.push_back({run.ranks, &programs(run.build).forLights(context.host.lights), 2});
+        } else {  // no block a mesh comes near: no seam
+            draws.push_back({run.ranks, &programs(smooth).forLights(context.host.lights), 0});
+        }
+    }
+    const auto& data = graph.addPass<Composite>(
+        "media_blocks",
+        [&](gpu::PassBuilder& builder, Composite& d) {
+            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.depth = builder.read(context.sceneDepth);
+            if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            if (context.slices.valid()) d.slices = builder.read(context.slices);
+            d.depths = builder.read(made.depths);
+            d.sums1 = builder.read(made.sums1);
+            d.sums2 = builder.read(made.sums2);
+            d.moments = builder.read(made.moments);
+            if (seam.mask.valid()) {
+                d.seamMask = builder.read(seam.mask);
+                d.seamStencil = builder.read(seam.stencil);
+            }
+        },
+        [this, draws, &context, &blocks, &particles, w, h, seamCell, scale = target.fullResScale](const gpu::PassResources& r,
+                                                                                                 const Composite& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
+            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            // Read only: a seam run's draws test it (stencil 1: near the seam), write nothing to it.
+            if (d.seamStencil.valid()) glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, r.id(d.seamStencil), 0);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            glViewport(0, 0, w, h);
+            const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+            for (const Draw& draw : draws) {
+                glProgramUniform2f(draw.program->id(), 1, scale.x, scale.y);
+                glProgramUniform1i(draw.program->id(), kSeamCellLocation, seamCell);
+            }
+            context.blocks->bind();
+            blocks.bind(0);
+            particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
+            particles.bindLampNeighbourhoods();
+            glBindTextureUnit(kSceneDepthUnit, r.id(d.depth));
+            if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, r.id(d.shadowMap));
+            if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, r.id(d.slices));
+            glBindTextureUnit(kImpostorDepthsUnit, r.id(d.depths));
+            glBindTextureUnit(kImpostorSums1Unit, r.id(d.sums1));
+            glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));
+            glBindTextureUnit(kImpostorMomentsUnit, r.id(d.moments));
+            if (d.seamMask.valid()) glBindTextureUnit(kSeamMaskUnit, r.id(d.seamMask));
+            glDisable(GL_DEPTH_TEST);
+            glDisable(GL_CULL_FACE);
+            glEnable(GL_BLEND);
+            glBlendEquation(GL_FUNC_ADD);
+            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            glBindVertexArray(vertexArray_.id());
+            for (const Draw& draw : draws) {
+                const GLuint program = draw.program->id();
+                glUseProgram(program);
+                glProgramUniform1i(program, kFirstRankLocation, draw.ranks.first);
+                glProgramUniform1i(program, kSeamPartLocation, draw.seamPart);
+                if (draw.seamPart != 0) {
+                    glEnable(GL_STENCIL_TEST);
+                    glStencilFunc(GL_EQUAL, draw.seamPart == 2 ? 1 : 0, 0xFF);
+                    glStencilMask(0x00);
+                } else {
+                    glDisable(GL_STENCIL_TEST);
+                }
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, draw.ranks.count);
+            }
+            glDisable(GL_STENCIL_TEST);
+            glStencilMask(0xFF);
+            glBindVertexArray(0);
+            glDisable(GL_BLEND);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.media;
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,46 @@
+#pragma once
+// The `block_composite` pass (shaders/media/block_composite.*).
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "blocks/block_gpu_buffers.h"
+#include "blocks/block_impostor_pass.h"
+#include "blocks/block_seam_mask_pass.h"
+#include "blocks/block_seam_stencil_pass.h"
+#include "common/local_light_programs.h"
+#include "common/particle_buffer.h"
+#include "frame/media_target.h"
+#include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/media/graph_frame.h"
+#include "planning/block_classification.h"
+
+namespace nimbus::media {
+
+// Camera: impostors into an atlas, then blocks composited back to front into the media target.
+// The composite program (block_composite.*) for a BlockCompositeBuild.
+gpu::ProgramDesc blockCompositeDesc(std::uint8_t build);
+
+class BlockCompositePass {
+public:
+    BlockCompositePass();
+    // The camera's plan is tile set 0 of `blocks`; `builds`: each block's BlockCompositeBuild bits.
+    // `seamOnly` (block_shading=seam): the BLOCK_EXACT_SHADING blocks are shaded exactly only near the
+    // texels where a mesh lies among the particles of the blocks a mesh comes near (BlockSeamMaskPass),
+    // and smoothly elsewhere, blended over a mask cell (block_seam.glsl seamWeight).
+    gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& atlas,
+                               const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
+                               bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
+                               const MediaTarget& target);
+
+private:
+    LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for
+
+    std::unique_ptr<LocalLightPrograms> programs_[8];  // by BlockCompositeBuild bits
+    std::unique_ptr<BlockSeamMaskPass> seamMask_;        // made when a frame first needs them
+    std::unique_ptr<BlockSeamStencilPass> seamStencil_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+}  // namespace nimbus::media

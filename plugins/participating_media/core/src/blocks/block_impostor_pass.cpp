@@ -1,0 +1,23 @@
+#include "blocks/block_impostor_pass.h"
+
+namespace nimbus::media {
+
+BlockImpostorAtlas addBlockImpostorPass(gpu::FrameGraph& graph, const BlockViewPlan& plan, const BlockGpuBuffers& blocks,
+                                        const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors) {
+    const glm::ivec2 atlas = plan.atlasSize;
+    return graph.addPass<BlockImpostorAtlas>(
+        "block_impostors",
+        [&](gpu::PassBuilder& builder, BlockImpostorAtlas& d) {
+            d.depths = builder.create("block_impostor_depths", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
+            d.sums1 = builder.create("block_impostor_sums1", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
+            d.sums2 = builder.create("block_impostor_sums2", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
+            d.moments = builder.create("block_impostor_moments", {GL_TEXTURE_2D, GL_RG32F, atlas.x, atlas.y, 1, 1});
+        },
+        [&plan, &blocks, &particles, &impostors](const gpu::PassResources& r, const BlockImpostorAtlas& d) {
+            impostors.render(plan, 0,
+                             {.depths = r.id(d.depths), .sums1 = r.id(d.sums1), .sums2 = r.id(d.sums2), .moments = r.id(d.moments)},
+                             blocks, particles);
+        });
+}
+
+}  // namespace nimbus::media

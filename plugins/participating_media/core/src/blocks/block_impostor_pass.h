@@ -1,0 +1,19 @@
+#pragma once
+// The `block_impostors` pass: the camera's impostor atlas.
+#include "blocks/block_gpu_buffers.h"
+#include "blocks/block_impostor_renderer.h"
+#include "common/particle_buffer.h"
+#include "nimbus/gpu/frame_graph.h"
+#include "planning/block_view_plan.h"
+
+namespace nimbus::media {
+
+// The camera's impostor atlas as frame-graph resources (the `block_impostors` pass).
+struct BlockImpostorAtlas {
+    gpu::ResourceHandle depths, sums1, sums2, moments;
+};
+// Adds the `block_impostors` pass: the camera's plan (tile set 0 of `blocks`) rendered into a new atlas.
+BlockImpostorAtlas addBlockImpostorPass(gpu::FrameGraph& graph, const BlockViewPlan& plan, const BlockGpuBuffers& blocks,
+                                        const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors);
+
+}  // namespace nimbus::media

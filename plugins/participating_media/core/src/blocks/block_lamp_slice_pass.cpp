@@ -1,0 +1,42 @@
+#include "blocks/block_lamp_slice_pass.h"
+
+#include "nimbus/media/gpu_bindings.h"
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::media {
+
+BlockLampSlicePass::BlockLampSlicePass() {
+    program_ = gpu::compileProgram(
+        {.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag", .defines = {"SLICE_PARTICLE_LIST"}});
+}
+
+gpu::ResourceHandle BlockLampSlicePass::add(gpu::FrameGraph& graph, gpu::ResourceHandle slices, const std::vector<SliceView>& views,
+                                            int resolution, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles) {
+    struct Data {
+        gpu::ResourceHandle slices;
+    };
+    const auto& data = graph.addPass<Data>(
+        "block_lamp_slices", [&](gpu::PassBuilder& builder, Data& d) { d.slices = builder.write(slices); },
+        [this, views, resolution, &blocks, &particles](const gpu::PassResources& r, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            const GLuint program = program_.id();
+            for (const SliceView& v : views) {
+                if (!v.view.perspective) continue;
+                bindSliceLayers(fbo.id(), r.id(d.slices), v, false);
+                setAdditiveSliceState(resolution);
+                glUseProgram(program);
+                particles.bindParticles();
+                blocks.bindLampSliceParticles();
+                setParticleSliceUniforms(program, v, resolution);
+                glBindVertexArray(vertexArray_.id());
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks.lampSliceParticleCount()));
+                glBindVertexArray(0);
+                glDisable(GL_BLEND);
+                unbindSliceLayers(fbo.id(), v);
+            }
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.slices;
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,54 @@
+// Blocks mode, light side (seed 000 §2.2): in each light view, every block spread over the slices
+// by its depth profile from the view's light impostors (block_slices.frag).
+#include <glm/gtc/type_ptr.hpp>
+
+#include "blocks/block_slice_pass.h"
+#include "nimbus/media/gpu_bindings.h"
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::media {
+
+BlockSlicePass::BlockSlicePass() {
+    program_ = gpu::compileProgram({.vertex = "media/block_slices.vert", .fragment = "media/block_slices.frag"});
+}
+
+gpu::ResourceHandle BlockSlicePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views,
+                                        const std::vector<BlockViewPlan>& plans, const BlockLightImpostors& impostors, int resolution,
+                                        const BlockGpuBuffers& blocks) {
+    int layers = 0;
+    for (std::size_t i = 0; i < views.size(); ++i) layers = std::max(layers, views[i].firstLayer + (views[i].slices + 3) / 4);
+    struct Data {
+        gpu::ResourceHandle slices;
+        std::vector<gpu::ResourceHandle> impostors, moments;
+    };
+    const auto& data = graph.addPass<Data>(
+        "block_light_slices",
+        [&](gpu::PassBuilder& builder, Data& d) {
+            d.slices = builder.create("light_slices", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1});
+            for (gpu::ResourceHandle h : impostors.depths) d.impostors.push_back(builder.read(h));
+            for (gpu::ResourceHandle h : impostors.moments) d.moments.push_back(builder.read(h));
+        },
+        [this, views, &plans, resolution, &blocks](const gpu::PassResources& r, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            const GLuint program = program_.id();
+            for (std::size_t i = 0; i < views.size(); ++i) {
+                const SliceView& v = views[i];
+                bindSliceLayers(fbo.id(), r.id(d.slices), v);
+                setAdditiveSliceState(resolution);
+                glUseProgram(program);
+                blocks.bind(i + 1);
+                glBindTextureUnit(kImpostorDepthsUnit, r.id(d.impostors[i]));
+                glBindTextureUnit(kSliceImpostorMomentsUnit, r.id(d.moments[i]));
+                setSliceViewUniforms(program, v, resolution);
+                glBindVertexArray(vertexArray_.id());
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(plans[i].tiles.size()));
+                glBindVertexArray(0);
+                glDisable(GL_BLEND);
+                unbindSliceLayers(fbo.id(), v);
+            }
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.slices;
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,65 @@
+#include "frame/frame_blocks.h"
+
+#include <cstddef>
+
+#include "nimbus/base/error.h"
+
+namespace nimbus::media {
+
+// Uniform blocks are declared at their largest, so the buffers are too.
+FrameBlocks::FrameBlocks()
+    : frameBuffer_(gpu::createBuffer(sizeof(gpu::GpuFrame), nullptr, GL_DYNAMIC_STORAGE_BIT)),
+      lightsBuffer_(gpu::createBuffer(gpu::kMaxLights * sizeof(gpu::GpuLight), nullptr, GL_DYNAMIC_STORAGE_BIT)),
+      shadowViewsBuffer_(gpu::createBuffer(gpu::kMaxLightViews * sizeof(gpu::GpuLightView), nullptr, GL_DYNAMIC_STORAGE_BIT)),
+      sliceViews_(gpu::createBuffer(sizeof(GpuSliceViews), nullptr, GL_DYNAMIC_STORAGE_BIT)) {}
+
+void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight) {
+    if (host.lights.size() > kMaxHostLights)
+        throw InputError(std::to_string(host.lights.size()) + " lights in one frame; the media plugin takes at most " +
+                         std::to_string(kMaxHostLights));
+    const HostShadowMaps* shadows = host.shadows;
+    frame_ = gpu::packFrame(host.camera, host.ambient, host.background, static_cast<int>(host.lights.size()),
+                            shadows ? shadows->size : 0, shadows ? shadows->pcfRadius : 0);
+    lights_.clear();
+    shadowViews_.clear();
+    for (std::size_t i = 0; i < host.lights.size(); ++i) {
+        const bool shadowed = shadows && i < shadows->views.size() && !shadows->views[i].empty();
+        const int count = shadowed ? static_cast<int>(shadows->views[i].size()) : 0;
+        lights_.push_back(gpu::packLight(host.lights[i], host.camera.origin, shadowed ? static_cast<int>(shadowViews_.size()) : -1, count));
+        for (int v = 0; v < count; ++v)
+            shadowViews_.push_back(gpu::packLightView(shadows->views[i][static_cast<std::size_t>(v)], static_cast<int>(shadowViews_.size()),
+                                                      0.0f, static_cast<float>(shadows->size)));
+    }
+    perLight_.assign(host.lights.size(), glm::ivec4(-1, 0, 0, 0));
+    for (std::size_t i = 0; i < perLight.size() && i < perLight_.size(); ++i)
+        if (perLight[i].y > 0) perLight_[i] = glm::ivec4(perLight[i], 0, 0);
+    views_ = sliceViews;
+    // Refused now, while the graph is set up, rather than half way through it.
+    for (const auto& [count, what] : {std::pair{shadowViews_.size(), "shadow map views"}, std::pair{views_.size(), "light slice views"}})
+        if (count > gpu::kMaxLightViews)
+            throw InputError(std::to_string(count) + " " + what + " in one frame; the media plugin draws at most " +
+                             std::to_string(gpu::kMaxLightViews));
+}
+
+void FrameBlocks::upload() const {
+    glNamedBufferSubData(frameBuffer_.id(), 0, sizeof(gpu::GpuFrame), &frame_);
+    gpu::uploadBlock(lightsBuffer_, gpu::kMaxLights, lights_, "lights");
+    gpu::uploadBlock(shadowViewsBuffer_, gpu::kMaxLightViews, shadowViews_, "shadow map views");
+    const glm::ivec4 count(static_cast<int>(views_.size()), 0, 0, 0);
+    glNamedBufferSubData(sliceViews_.id(), 0, sizeof(count), &count);
+    if (!perLight_.empty())
+        glNamedBufferSubData(sliceViews_.id(), offsetof(GpuSliceViews, perLight), static_cast<GLsizeiptr>(perLight_.size() * sizeof(glm::ivec4)),
+                             perLight_.data());
+    if (!views_.empty())
+        glNamedBufferSubData(sliceViews_.id(), offsetof(GpuSliceViews, views), static_cast<GLsizeiptr>(views_.size() * sizeof(gpu::GpuLightView)),
+                             views_.data());
+}
+
+void FrameBlocks::bind() const {
+    glBindBufferBase(GL_UNIFORM_BUFFER, gpu::kFrameUniformBinding, frameBuffer_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, gpu::kLightsBinding, lightsBuffer_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, gpu::kShadowViewsBinding, shadowViewsBuffer_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kSliceViewsBinding, sliceViews_.id());
+}
+
+}  // namespace nimbus::media

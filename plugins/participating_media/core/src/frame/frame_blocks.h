@@ -1,0 +1,30 @@
+#pragma once
+// The plugin's own uniform blocks for a frame (gpu/frame_layout.h Frame, Lights, ShadowViews, and
+// MediaSliceViews), packed from the HostFrame: the plugin never reads the host's buffers.
+#include <vector>
+
+#include "nimbus/gpu/frame_layout.h"
+#include "nimbus/media/gpu_bindings.h"
+#include "nimbus/media/host.h"
+
+namespace nimbus::media {
+
+class FrameBlocks {
+public:
+    FrameBlocks();
+    // Packs now; upload() writes them (when the graph runs, after the host's previous frame).
+    void pack(const HostFrame& frame, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight);
+    void upload() const;
+    void bind() const;  // Frame, Lights, ShadowViews and MediaSliceViews at their points
+    GLuint sliceViews() const { return sliceViews_.id(); }
+
+private:
+    gpu::GpuFrame frame_{};
+    std::vector<gpu::GpuLight> lights_;
+    std::vector<gpu::GpuLightView> shadowViews_;
+    std::vector<glm::ivec4> perLight_;
+    std::vector<gpu::GpuLightView> views_;
+    gpu::Buffer frameBuffer_, lightsBuffer_, shadowViewsBuffer_, sliceViews_;
+};
+
+}  // namespace nimbus::media

@@ -1,0 +1,65 @@
+// MediaRenderer's calls for hosts without a frame graph: each runs the plugin's passes on a graph
+// of its own, with the host's textures borrowed into it and the results kept past it.
+#include <memory>
+
+#include "frame/frame_blocks.h"
+#include "frame/immediate_frame.h"
+#include "nimbus/base/error.h"
+#include "nimbus/media/media_renderer.h"
+
+namespace nimbus::media {
+
+LightSlices MediaRenderer::renderLightSlices(const HostFrame& host, gpu::PassTimer* timer) {
+    if (!immediate_) immediate_ = std::make_unique<ImmediateFrame>();
+    ImmediateFrame& im = *immediate_;
+    if (im.previousFrame != nullptr) {
+        glClientWaitSync(im.previousFrame, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64{10'000'000'000});  // 10 s: a frame, not a hang
+        glDeleteSync(im.previousFrame);
+        im.previousFrame = nullptr;
+    }
+    im.giveBack(im.slices);
+    im.frame = GraphFrame{};
+    im.frame.host = host;
+    gpu::FrameGraph graph(im.pool);
+    im.importShadowMap(graph, host);
+    addLightSlices(graph, im.frame);
+    if (im.frame.slices.valid()) graph.extract(im.frame.slices);
+    graph.compile();
+    graph.execute(timer);
+    if (im.frame.slices.valid()) im.slices = graph.extracted(im.frame.slices);
+    return {im.slices != nullptr ? im.slices->id() : 0, blocks_ ? blocks_->sliceViews() : 0};
+}
+
+MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* timer) {
+    if (!immediate_) throw std::logic_error("MediaRenderer::renderMedia before renderLightSlices in this frame");
+    ImmediateFrame& im = *immediate_;
+    im.giveBack(im.color);
+    im.giveBack(im.depthUsed);
+    im.frame.host = host;  // the slice views and uniform blocks stay from renderLightSlices
+    gpu::FrameGraph graph(im.pool);
+    im.importShadowMap(graph, host);
+    im.frame.slices = im.slices != nullptr ? graph.importTexture("media_light_slices", *im.slices) : gpu::ResourceHandle{};
+    MediaLayer layer;
+    if (host.sceneDepth != 0) {
+        im.sceneDepth = gpu::Texture::borrow(host.sceneDepth, {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, host.camera.width, host.camera.height, 1, 1});
+        im.frame.sceneDepth = graph.importTexture("host_scene_depth", im.sceneDepth);
+        addMedia(graph, im.frame);
+    }
+    if (im.frame.color.valid()) graph.extract(im.frame.color);
+    if (im.frame.depthUsed.valid()) graph.extract(im.frame.depthUsed);
+    graph.compile();
+    graph.execute(timer);
+    if (im.frame.color.valid()) im.color = graph.extracted(im.frame.color);
+    if (im.frame.depthUsed.valid()) im.depthUsed = graph.extracted(im.frame.depthUsed);
+    im.pool.endFrame();
+    im.previousFrame = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    if (im.color != nullptr) {
+        layer.color = im.color->id();
+        layer.size = {im.color->desc().width, im.color->desc().height};
+        layer.depthUsed = im.depthUsed != nullptr ? im.depthUsed->id() : 0;
+        layer.edgeThreshold = im.frame.edgeThreshold;
+    }
+    return layer;
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,16 @@
+#pragma once
+// Where a mode pass renders the medium this frame.
+#include <glm/glm.hpp>
+
+namespace nimbus::media {
+
+// The media target of one frame: full resolution, or reduced (seed 002's offscreen particles) and
+// upsampled afterwards. A mode pass renders into `size`; texel i stands for full-resolution
+// position (i + 0.5) · fullResScale.
+struct MediaTarget {
+    glm::ivec2 size{1};
+    glm::vec2 fullResScale{1.0f};
+    const char* name = "media_color";
+};
+
+}  // namespace nimbus::media

@@ -1,0 +1,89 @@
+// Per-particle lighting (fast and balanced tiers): one compute invocation per particle, in draw
+// order, evaluates its source at nine rays through its billboard (shaders/media/particle_lighting.comp)
+// into a buffer the splats read per vertex. Fragments then pay for opacity only.
+#include <algorithm>
+
+#include "particles/particle_lighting_pass.h"
+
+#include "frame/frame_blocks.h"
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/gpu/frame_layout.h"
+
+namespace nimbus::media {
+
+namespace {
+constexpr GLuint kLocalSize = 64;
+constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
+constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
+constexpr std::size_t kSlotsPerParticle = 8, kSlotsPerConstantParticle = 2;  // particle_light_layout.glsl
+}  // namespace
+
+ParticleLightingPass::ParticleLightingPass() = default;
+
+const gpu::Program& ParticleLightingPass::program(const std::vector<Light>& lights, bool exact, bool constant) {
+    std::unique_ptr<LocalLightPrograms>& p = programs_[(exact ? 1 : 0) + (constant ? 2 : 0)];
+    if (!p) p = std::make_unique<LocalLightPrograms>(particleLightingDesc(exact, constant));
+    return p->forLights(lights);
+}
+
+gpu::ProgramDesc particleLightingDesc(bool exact, bool constant) {
+    gpu::ProgramDesc desc{.compute = "media/particle_lighting.comp"};
+    if (exact) desc.defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"};
+    if (constant) desc.defines.push_back("SPLAT_CONSTANT");
+    return desc;
+}
+
+void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
+                               std::size_t particles, bool exact, bool constant, const FragmentLamps& lamps) {
+    const gpu::Program& program = this->program(context.host.lights, exact, constant);
+    // Sized from the set: the buffer fills when the upload pass runs.
+    const std::size_t bytes = std::max<std::size_t>(particles, 1) * (constant ? kSlotsPerConstantParticle : kSlotsPerParticle) * sizeof(glm::vec4);
+    if (!light_ || capacity_ < bytes) {
+        capacity_ = std::max(bytes, capacity_ * 3 / 2);
+        light_ = gpu::createBuffer(capacity_, nullptr, 0);
+    }
+    struct Data {
+        gpu::ResourceHandle shadowMap, slices;
+    };
+    graph.addPass<Data>(
+        "media_particle_lighting",
+        [&](gpu::PassBuilder& builder, Data& d) {
+            if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            if (context.slices.valid()) d.slices = builder.read(context.slices);
+            builder.sideEffect();  // fills this pass's own buffer, which the splats read
+        },
+        [this, &program, &context, &buffer, lamps](const gpu::PassResources& resources, const Data& d) {
+            const auto count = static_cast<GLuint>(buffer.count());
+            glUseProgram(program.id());
+            context.blocks->bind();
+            buffer.bindParticles();
+            buffer.bindOrder();
+            buffer.bindLampNeighbourhoods();
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleLightBinding, light_.id());
+            if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
+            if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
+            glProgramUniform1ui(program.id(), 0, count);
+            glProgramUniform1i(program.id(), kFragmentSunLocation, lamps.sun);
+            glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
+            glDispatchCompute((count + kLocalSize - 1) / kLocalSize, 1, 1);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        });
+}
+
+FragmentLamps fragmentLamps(const std::vector<Light>& lights) {
+    FragmentLamps out;
+    out.lamps.fill(-1);
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].kind == gpu::LightKind::Directional) {
+            if (out.sun < 0) out.sun = static_cast<GLint>(i);
+        } else if (k < out.lamps.size()) {
+            out.lamps[k++] = static_cast<GLint>(i);
+        }
+    }
+    return out;
+}
+
+void ParticleLightingPass::bind() const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleLightBinding, light_.id()); }
+
+}  // namespace nimbus::media

@@ -1,0 +1,47 @@
+#pragma once
+// The `particle_lighting` pass: per-particle lighting of the fast tiers (shaders/media/particle_lighting.comp).
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "common/local_light_programs.h"
+#include "common/particle_buffer.h"
+#include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/media/graph_frame.h"
+
+namespace nimbus::media {
+
+inline constexpr int kMaxFragmentLamps = 2;  // shaders/media/particle_light_layout.glsl MAX_FRAGMENT_LAMPS
+
+// The lights the fast splats evaluate per fragment (−1: none): the first directional light's phase
+// function (g = 0.99 peaks within a few pixels), and point and spot lights' 1/d² (near a lamp it
+// peaks across a particle far more sharply than any fit follows).
+struct FragmentLamps {
+    GLint sun = -1;
+    std::array<GLint, kMaxFragmentLamps> lamps{};
+};
+FragmentLamps fragmentLamps(const std::vector<Light>& lights);
+
+// Per-particle lighting (the fast tiers): each particle's source fitted over its billboard, in draw
+// order, from nine rays through it (`exact`: each shaded as particles.frag shades a pixel;
+// `constant`: the centre ray alone, for particles a few pixels wide).
+// The per-particle lighting program (particle_lighting.comp): balanced's exact chord integrals, one ray per particle.
+gpu::ProgramDesc particleLightingDesc(bool exact, bool constant);
+
+class ParticleLightingPass {
+public:
+    ParticleLightingPass();
+    void add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer, std::size_t particles,
+             bool exact, bool constant, const FragmentLamps& lamps);
+    void bind() const;  // the lighting buffer, for the splats
+
+private:
+    const gpu::Program& program(const std::vector<Light>& lights, bool exact, bool constant);
+    std::unique_ptr<LocalLightPrograms> programs_[4];  // by exact + 2·constant, built when first asked for
+    gpu::Buffer light_;
+    std::size_t capacity_ = 0;
+};
+
+}  // namespace nimbus::media

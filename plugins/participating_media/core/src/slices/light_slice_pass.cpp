@@ -1,0 +1,52 @@
+// Light slices: optical depth from each light up to K planes across the medium, exact at the
+// planes (shaders/media/light_slices.*). The opaque pass and the media pass read them as T = e^−τ.
+#include <algorithm>
+
+#include "slices/light_slice_pass.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "nimbus/media/gpu_bindings.h"
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::media {
+
+
+LightSlicePass::LightSlicePass() {
+    program_ = gpu::compileProgram({.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag"});
+}
+
+gpu::ResourceHandle LightSlicePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
+                                           const ParticleGpuBuffer& buffer) {
+    int layers = 0;
+    for (const auto& v : views) layers = std::max(layers, v.firstLayer + (v.slices + 3) / 4);
+    struct Data {
+        gpu::ResourceHandle slices;
+    };
+    const auto& data = graph.addPass<Data>(
+        "light_slices",
+        [&](gpu::PassBuilder& builder, Data& d) {
+            d.slices = builder.create("light_slices", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1});
+        },
+        [this, views, resolution, &buffer](const gpu::PassResources& resources, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glUseProgram(program_.id());
+            buffer.bindParticles();
+            setAdditiveSliceState(resolution);
+            const GLuint program = program_.id();
+            for (const auto& v : views) {
+                bindSliceLayers(fbo.id(), resources.id(d.slices), v);
+
+                setParticleSliceUniforms(program, v, resolution);
+                glBindVertexArray(vertexArray_.id());
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
+                glBindVertexArray(0);
+                unbindSliceLayers(fbo.id(), v);
+            }
+            glDisable(GL_BLEND);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.slices;
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,45 @@
+// Offscreen media (seed 002): the media pass runs at ½ or ¼ resolution; this records the view depth
+// each reduced texel used (shaders/media/depth_used.frag), which the compose pass needs to upsample
+// the media target with depth awareness (shaders/common/upsample.glsl).
+#include "upsample/media_depth_used_pass.h"
+
+#include "frame/frame_blocks.h"
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/gpu/frame_layout.h"
+
+namespace nimbus::media {
+
+MediaDepthUsedPass::MediaDepthUsedPass()
+    : program_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/depth_used.frag"})) {}
+
+gpu::ResourceHandle MediaDepthUsedPass::add(gpu::FrameGraph& graph, GraphFrame& context, const MediaTarget& target) {
+    struct Data {
+        gpu::ResourceHandle depth, scene;
+    };
+    const glm::ivec2 size = target.size;
+    const auto& data = graph.addPass<Data>(
+        "media_depth_used",
+        [&](gpu::PassBuilder& builder, Data& d) {
+            d.depth = builder.create("media_depth_used", {GL_TEXTURE_2D, GL_R32F, size.x, size.y, 1, 1});
+            d.scene = builder.read(context.sceneDepth);
+        },
+        [this, &context, size, scale = target.fullResScale](const gpu::PassResources& r, const Data& d) {
+            gpu::Framebuffer fbo = gpu::createFramebuffer();
+            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.depth), 0);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+            glViewport(0, 0, size.x, size.y);
+            glDisable(GL_DEPTH_TEST);
+            glDisable(GL_BLEND);
+            glUseProgram(program_.id());
+            context.blocks->bind();
+            glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
+            glBindTextureUnit(kSceneDepthUnit, r.id(d.scene));
+            glBindVertexArray(vertexArray_.id());
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glBindVertexArray(0);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        });
+    return data.depth;
+}
+
+}  // namespace nimbus::media

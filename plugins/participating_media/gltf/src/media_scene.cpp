@@ -1,0 +1,206 @@
+#include "nimbus/media/media_scene.h"
+
+#include "nimbus/media/emitter_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include "nimbus/base/error.h"
+#include "nimbus/base/log.h"
+
+namespace nimbus::media {
+namespace {
+
+// Names the place of every problem: file, node, field.
+struct Where {
+    std::string file;
+    std::string node;
+    std::string base;  // "extensions.NIMBUS_participating_media"
+
+    [[noreturn]] void fail(std::string_view field, std::string_view problem) const {
+        throwInputError(file, node, field.empty() ? base : base + "." + std::string(field), problem);
+    }
+};
+
+void refuseUnknownKeys(const nlohmann::json& object, std::initializer_list<std::string_view> allowed,
+                       const Where& where, const std::string& prefix) {
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        bool known = false;
+        for (std::string_view a : allowed) known = known || it.key() == a;
+        if (!known) where.fail(prefix.empty() ? it.key() : prefix + "." + it.key(), "unknown key");
+    }
+}
+
+double readNumber(const nlohmann::json& value, const Where& where, const std::string& field) {
+    if (!value.is_number()) where.fail(field, "must be a number");
+    const double v = value.get<double>();
+    if (!std::isfinite(v)) where.fail(field, "must be finite");
+    return v;
+}
+
+glm::vec3 readColor(const nlohmann::json& value, const Where& where, const std::string& field, double lo, double hi,
+                    std::string_view range) {
+    if (!value.is_array() || value.size() != 3) where.fail(field, "must be an array of 3 numbers");
+    glm::vec3 out;
+    for (int c = 0; c < 3; ++c) {
+        const std::string element = field + "[" + std::to_string(c) + "]";
+        const double v = readNumber(value[static_cast<std::size_t>(c)], where, element);
+        if (v < lo || v > hi) where.fail(element, "must be " + std::string(range));
+        out[c] = static_cast<float>(v);
+    }
+    return out;
+}
+
+Medium parseMedium(const nlohmann::json& object, const Where& where) {
+    if (!object.is_object()) where.fail("medium", "must be an object");
+    refuseUnknownKeys(object, {"extinction", "albedo", "g", "emission", "phase"}, where, "medium");
+    Medium m;
+    if (!object.contains("extinction")) where.fail("medium.extinction", "is required");
+    const double extinction = readNumber(object["extinction"], where, "medium.extinction");
+    if (!(extinction > 0.0) || extinction > 3.0e38) where.fail("medium.extinction", "must be > 0 (and a float)");
+    m.extinction = static_cast<float>(extinction);
+    if (object.contains("albedo")) m.albedo = readColor(object["albedo"], where, "medium.albedo", 0.0, 1.0, "in [0, 1]");
+    if (object.contains("g")) {
+        const double g = readNumber(object["g"], where, "medium.g");
+        if (!(g > -1.0 && g < 1.0)) where.fail("medium.g", "must be in (-1, 1)");
+        m.g = static_cast<float>(g);
+    }
+    if (object.contains("emission"))
+        m.emission = readColor(object["emission"], where, "medium.emission", 0.0, 3.0e38, ">= 0 (and a float)");
+    if (object.contains("phase")) {
+        const auto& phase = object["phase"];
+        if (!phase.is_string()) where.fail("medium.phase", "must be a string");
+        const auto name = phase.get<std::string>();
+        if (name == "henyey-greenstein") {
+            m.phase = PhaseFunction::HenyeyGreenstein;
+        } else if (name == "rayleigh") {
+            m.phase = PhaseFunction::Rayleigh;
+        } else {
+            where.fail("medium.phase", "unknown value \"" + name + "\" (expected \"henyey-greenstein\" or \"rayleigh\")");
+        }
+    }
+    return m;
+}
+
+int readAccessorIndex(const nlohmann::json& value, const Where& where, const std::string& field) {
+    if (!value.is_number_integer() || value.get<long long>() < 0 || value.get<long long>() > 0x7fffffff)
+        where.fail(field, "must be an accessor index (an integer >= 0)");
+    return static_cast<int>(value.get<long long>());
+}
+
+void parseParticles(const GltfDocument& scene, const nlohmann::json& object, const Where& where, MediaNode& out) {
+    if (!object.is_object()) where.fail("particles", "must be an object");
+    refuseUnknownKeys(object, {"position", "radius", "density"}, where, "particles");
+    for (const char* required : {"position", "radius"})
+        if (!object.contains(required)) where.fail(std::string("particles.") + required, "is required");
+
+    const std::string full = where.base + ".particles.";
+    const int position = readAccessorIndex(object["position"], where, "particles.position");
+    const int radius = readAccessorIndex(object["radius"], where, "particles.radius");
+    const std::size_t count = scene.accessorCount(position, where.node, full + "position");
+    if (count > kMaxParticlesPerNode)
+        where.fail("particles.position", std::to_string(count) + " particles is more than the limit of " +
+                                             std::to_string(kMaxParticlesPerNode));
+    if (scene.accessorCount(radius, where.node, full + "radius") != count)
+        where.fail("particles.radius", "count differs from particles.position");
+    int density = -1;
+    if (object.contains("density")) {
+        density = readAccessorIndex(object["density"], where, "particles.density");
+        if (scene.accessorCount(density, where.node, full + "density") != count)
+            where.fail("particles.density", "count differs from particles.position");
+    }
+
+    const std::vector<float> p = scene.readFloats(position, 3, where.node, full + "position");
+    out.radii = scene.readFloats(radius, 1, where.node, full + "radius");
+    out.densities = density >= 0 ? scene.readFloats(density, 1, where.node, full + "density")
+                                 : std::vector<float>(count, 1.0f);
+    if (p.size() != 3 * count || out.radii.size() != count || out.densities.size() != count)
+        where.fail("particles", "accessor sizes do not match their counts");
+    out.localPositions.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        out.localPositions[i] = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+        if (!std::isfinite(p[3 * i]) || !std::isfinite(p[3 * i + 1]) || !std::isfinite(p[3 * i + 2]))
+            where.fail("particles.position", "element " + std::to_string(i) + " is not finite");
+        if (!(out.radii[i] > 0.0f) || !std::isfinite(out.radii[i]))
+            where.fail("particles.radius", "element " + std::to_string(i) + " must be > 0 and finite");
+        if (!(out.densities[i] >= 0.0f) || !std::isfinite(out.densities[i]))
+            where.fail("particles.density", "element " + std::to_string(i) + " must be >= 0 and finite");
+        if (!std::isfinite(out.medium.extinction * out.densities[i]))
+            where.fail("particles.density", "element " + std::to_string(i) + " times medium.extinction overflows");
+    }
+}
+
+}  // namespace
+
+MediaScene parseMediaScene(const GltfDocument& scene) {
+    MediaScene media;
+    const std::string file = scene.displayName();
+    for (std::size_t n = 0; n < scene.nodeCount(); ++n) {
+        const nlohmann::json* extension = scene.mediaExtension(n);
+        if (extension == nullptr) continue;
+        const std::string name = scene.nodeName(n);
+        // Same object naming as the asset loader: node "name" (nodes[n]).
+        const std::string index = "nodes[" + std::to_string(n) + "]";
+        Where where{file, name.empty() ? index : "node \"" + name + "\" (" + index + ")", std::string("extensions.") + kMediaExtension};
+        const nlohmann::json& object = *extension;
+        if (!object.is_object()) where.fail("", "must be an object");
+        refuseUnknownKeys(object, {"medium", "particles", "emitter", "render"}, where, "");
+        if (!object.contains("medium")) where.fail("medium", "is required");
+
+        MediaNode out;
+        out.node = static_cast<int>(n);
+        out.name = name;
+        out.medium = parseMedium(object["medium"], where);
+        if (object.contains("particles")) parseParticles(scene, object["particles"], where, out);
+        if (object.contains("emitter")) out.emitter = object["emitter"];
+        if (object.contains("render")) out.render = object["render"];
+        if (!out.emitter.is_null()) (void)parseNodeEmitter(scene, out);  // refuse a bad emitter at load, not mid-run
+        media.nodes.push_back(std::move(out));
+    }
+    return media;
+}
+
+void appendCloudParticles(ParticleSet& out, const Medium& medium, const std::vector<glm::vec3>& positions,
+                          const std::vector<float>& radii, const std::vector<float>& densities, const glm::dmat4& world) {
+    const double scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(world))));
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        const float density = densities.empty() ? 1.0f : densities[i];
+        if (!(density > 0.0f)) continue;  // no extinction: invisible, and nothing to shadow
+        const glm::dvec3 p = glm::dvec3(world * glm::dvec4(glm::dvec3(positions[i]), 1.0));
+        out.push(p, static_cast<float>(radii[i] * scale), static_cast<float>(static_cast<double>(medium.extinction) * density), medium);
+    }
+}
+
+bool hasUniformScale(const glm::dmat4& world) {
+    const glm::dmat3 linear(world);
+    // A sphere stays a sphere only under a uniform scale: compare the column lengths.
+    const double sx = glm::length(linear[0]), sy = glm::length(linear[1]), sz = glm::length(linear[2]);
+    return std::max({sx, sy, sz}) <= (1.0 + 1e-6) * std::min({sx, sy, sz});
+}
+
+ParticleSet staticParticles(const MediaScene& media, const std::vector<glm::dmat4>& world) {
+    ParticleSet set;
+    std::size_t total = 0;
+    for (const MediaNode& n : media.nodes) total += n.localPositions.size();
+    set.reserve(total);
+    for (const MediaNode& n : media.nodes) {
+        if (n.localPositions.empty()) continue;
+        const glm::dmat4 m = n.node >= 0 && static_cast<std::size_t>(n.node) < world.size()
+                                 ? world[static_cast<std::size_t>(n.node)]
+                                 : glm::dmat4(1.0);
+        if (!hasUniformScale(m))
+            log::warn("nodes[" + std::to_string(n.node) + "] \"" + n.name +
+                      "\": non-uniform scale on a particle cloud; radii use the mean scale cbrt|det|");
+        appendCloudParticles(set, n.medium, n.localPositions, n.radii, n.densities, m);
+    }
+    return set;
+}
+
+ParticleSet particlesAtTime(const GltfDocument& scene, const MediaScene& media, double timeSeconds) {
+    ParticleSet set = staticParticles(media, scene.worldTransforms(timeSeconds));
+    set.append(simulateEmittersTo(scene, media, timeSeconds));
+    return set;
+}
+
+}  // namespace nimbus::media

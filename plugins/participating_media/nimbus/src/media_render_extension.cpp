@@ -1,0 +1,47 @@
+#include "nimbus/media/nimbus/media_render_extension.h"
+
+#include "nimbus/media/gpu_bindings.h"
+#include "nimbus/render/light_views.h"
+
+namespace nimbus::media {
+
+HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows) {
+    HostFrame frame;
+    frame.camera = context.view;
+    frame.lights = render::punctualLights(context.input.lights);
+    frame.ambient = context.input.environment.ambient;
+    frame.background = context.input.environment.background;
+    shadows.texture = 0;
+    shadows.size = context.settings.shadowMapSize;
+    shadows.pcfRadius = context.settings.pcfRadius;
+    shadows.views = context.shadowViews;
+    frame.shadows = &shadows;
+    if (context.input.gpuScene != nullptr) {
+        for (const render::MeshInstance& instance : context.input.instances) {
+            const auto& [lo, hi] = context.input.gpuScene->localBounds(instance.mesh);
+            if (lo.x > hi.x) continue;  // a mesh without triangles
+            frame.occluders.push_back(occluderBox(instance.world, glm::dvec3(lo), glm::dvec3(hi)));
+        }
+    }
+    return frame;
+}
+
+void MediaRenderExtension::beforeOpaque(render::FrameGraph& graph, render::FrameContext& context) {
+    frame_ = GraphFrame{};
+    frame_.host = hostFrame(context, shadows_);
+    frame_.shadowMap = context.shadowMap;
+    renderer_.addLightSlices(graph, frame_);
+    if (!frame_.slices.valid()) return;
+    // The opaque pass's meshes receive the smoke's shadow through the plugin's GLSL host include.
+    const GLuint views = frame_.blocks != nullptr ? renderer_.sliceViewsBlock() : 0;
+    context.meshShading.push_back({"MEDIA_LIGHT_TRANSMITTANCE", {{kSlicesUnit, frame_.slices}},
+                                   [views] { glBindBufferBase(GL_UNIFORM_BUFFER, kSliceViewsBinding, views); }});
+}
+
+void MediaRenderExtension::afterOpaque(render::FrameGraph& graph, render::FrameContext& context) {
+    frame_.sceneDepth = context.sceneDepth;
+    renderer_.addMedia(graph, frame_);
+    if (frame_.color.valid()) context.overlay = {frame_.color, frame_.depthUsed, frame_.edgeThreshold};
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,29 @@
+// Every binding point the media plugin's shaders use (C++ twin: nimbus/media/gpu_bindings.h; a test
+// checks each against the compiled programs). A host may move the two its mesh shader shares with
+// the plugin by defining them before including media/host/light_transmittance.glsl.
+#ifndef MEDIA_SLICE_VIEWS_BINDING
+#define MEDIA_SLICE_VIEWS_BINDING 3  // uniform block MediaSliceViews
+#endif
+#ifndef MEDIA_SLICES_UNIT
+#define MEDIA_SLICES_UNIT 2          // sampler2DArray of the light slices
+#endif
+#define MEDIA_SCENE_DEPTH_UNIT 3     // the host's scene depth (reversed Z)
+#define MEDIA_SHADOW_DEPTH_UNIT 4    // the host's mesh shadow map, read as raw depth
+#define MEDIA_IMPOSTOR_DEPTHS_UNIT 5
+#define MEDIA_IMPOSTOR_SUMS1_UNIT 6
+#define MEDIA_KERNEL_TABLE_UNIT 6
+#define MEDIA_IMPOSTOR_SUMS2_UNIT 7
+#define MEDIA_IMPOSTOR_MOMENTS_UNIT 8
+#define MEDIA_SLICE_IMPOSTOR_MOMENTS_UNIT 6  // block_slices.frag
+#define MEDIA_SEAM_MASK_UNIT 9
+#define MEDIA_SLABS_UNIT 0
+// Storage buffers.
+#define MEDIA_PARTICLES_BINDING 3
+#define MEDIA_DRAW_ORDER_BINDING 5
+#define MEDIA_IMPOSTOR_ITEMS_BINDING 6
+#define MEDIA_BLOCK_TILES_BINDING 7
+#define MEDIA_LAMP_NEIGHBOURHOODS_BINDING 8
+#define MEDIA_LAMP_SLICE_PARTICLES_BINDING 9
+#define MEDIA_PARTICLE_LIGHT_BINDING 10
+#define MEDIA_BLOCK_NEIGHBOURS_BINDING 10
+#define MEDIA_SLICE_PIECES_BINDING 11

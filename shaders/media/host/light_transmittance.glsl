@@ -1,0 +1,51 @@
+// The media plugin's light slices, for a host's mesh shader (docs/integration.md): how much of a
+// light reaches an origin-relative point p through the medium, exp(−τ). Slice k (0-based) of a view
+// holds the optical depth accumulated from the light up to view depth near + (k+1)(far − near)/K;
+// depth `near` has zero. Between slices τ is interpolated linearly, so τ is exact at every plane.
+#include "common/math.glsl"
+#include "common/light_views.glsl"
+#include "media/bindings.glsl"
+
+const int MEDIA_MAX_LIGHTS = 64;  // nimbus/media/gpu_bindings.h kMaxHostLights
+layout(std140, binding = MEDIA_SLICE_VIEWS_BINDING) uniform MediaSliceViews {
+    ivec4 mediaSliceCount;                      // x: slice views this frame (0: none)
+    ivec4 mediaLightSlices[MEDIA_MAX_LIGHTS];   // per host light: x first view (−1: none), y view count
+    GpuLightView mediaSliceViews[MAX_LIGHT_VIEWS];
+};
+layout(binding = MEDIA_SLICES_UNIT) uniform sampler2DArray mediaSlices;
+
+float mediaSliceValue(vec2 uv, float firstLayer, int k) {
+    vec4 texel = texture(mediaSlices, vec3(uv, firstLayer + float(k / 4)));
+    int c = k - 4 * (k / 4);
+    return c == 0 ? texel.x : c == 1 ? texel.y : c == 2 ? texel.z : texel.w;
+}
+
+// The optical depth one light view's slices hold at p.
+float mediaViewOpticalDepth(GpuLightView v, vec3 p) {
+    vec2 uv;
+    if (!lightViewUv(v, p, uv)) return 0.0;  // slices cover the medium: outside them there is none
+    float depth = -(v.view * vec4(p, 1.0)).z;
+    int K = int(v.params.w);
+    float s = (depth - v.params.y) / (v.params.z - v.params.y) * float(K);
+    if (s <= 0.0) return 0.0;
+    // Two fetches whatever s is (llvmpipe runs every branch): the enclosing slices, or the last one
+    // past the medium.
+    int k = min(int(floor(s)), K - 1);
+    float lo = k == 0 ? 0.0 : mediaSliceValue(uv, v.params2.x, max(k - 1, 0));
+    float hi = mediaSliceValue(uv, v.params2.x, k);
+    return s >= float(K) ? hi : mix(lo, hi, s - float(k));
+}
+
+// The view of host light `light` (at origin-relative `lightPosition`) whose slices hold p, or −1.
+int mediaLightSliceView(int light, vec3 lightPosition, vec3 p) {
+    if (mediaSliceCount.x == 0) return -1;
+    ivec4 s = mediaLightSlices[light];
+    return s.x < 0 ? -1 : lightViewIndex(s.x, s.y, lightPosition, p);
+}
+
+float mediaOpticalDepth(int light, vec3 lightPosition, vec3 p) {
+    int view = mediaLightSliceView(light, lightPosition, p);
+    return view < 0 ? 0.0 : mediaViewOpticalDepth(mediaSliceViews[view], p);
+}
+
+float mediaTransmittance(int light, vec3 lightPosition, vec3 p) { return exp(-mediaOpticalDepth(light, lightPosition, p)); }

@@ -1,0 +1,79 @@
+// frame_layout.h against its GLSL twins (shaders/common/frame.glsl, lights.glsl, light_views.glsl,
+// shadow_views.glsl), as the driver lays them out in the opaque program, which binds every one of
+// them, with their binding points.
+#include "nimbus/gpu/frame_layout.h"
+
+#include <cstddef>
+
+#include "gl_test_context.h"
+#include "glsl_layout.h"
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::gpu {
+namespace {
+
+using test::expectMembers;
+
+class FrameLayout : public test::GlTest {
+protected:
+    void SetUp() override {
+        GlTest::SetUp();
+        program_ = compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag"});
+    }
+    GLuint program() const { return program_.id(); }
+    Program program_;
+};
+
+TEST_F(FrameLayout, FrameMatchesGpuFrame) {
+    expectMembers(program(), GL_UNIFORM, "Frame.",
+                  {{"viewProjection", offsetof(GpuFrame, viewProjection)},
+                   {"viewMatrix", offsetof(GpuFrame, view)},
+                   {"inverseViewProjection", offsetof(GpuFrame, inverseViewProjection)},
+                   {"cameraRight", offsetof(GpuFrame, cameraRight)},
+                   {"cameraUp", offsetof(GpuFrame, cameraUp)},
+                   {"cameraForward", offsetof(GpuFrame, cameraForward)},
+                   {"depthParams", offsetof(GpuFrame, depthParams)},
+                   {"viewport", offsetof(GpuFrame, viewport)},
+                   {"ambient", offsetof(GpuFrame, ambient)},
+                   {"background", offsetof(GpuFrame, background)},
+                   {"counts", offsetof(GpuFrame, counts)}});
+    EXPECT_EQ(test::blockSize(program(), GL_UNIFORM_BLOCK, "Frame"), static_cast<GLint>(sizeof(GpuFrame)));
+}
+
+// A struct in an array of a uniform block: its members at their offsets, and the stride (from
+// element 0 to element 1) and the block's size equal to the C++ struct's and the capacity's.
+void expectUniformArray(GLuint program, const std::string& block, const std::string& array, std::size_t stride,
+                        std::size_t capacity, const std::vector<test::MemberOffset>& members) {
+    expectMembers(program, GL_UNIFORM, array + "[0].", members);
+    const std::string first = array + "[0]." + members.front().name, second = array + "[1]." + members.front().name;
+    EXPECT_EQ(test::resourceOffset(program, GL_UNIFORM, second) - test::resourceOffset(program, GL_UNIFORM, first),
+              static_cast<GLint>(stride))
+        << array;
+    EXPECT_EQ(test::blockSize(program, GL_UNIFORM_BLOCK, block), static_cast<GLint>(stride * capacity)) << block;
+}
+
+TEST_F(FrameLayout, LightsMatchGpuLight) {
+    expectUniformArray(program(), "Lights", "lights", sizeof(GpuLight), kMaxLights,
+                       {{"position", offsetof(GpuLight, position)},
+                        {"direction", offsetof(GpuLight, direction)},
+                        {"radiance", offsetof(GpuLight, radiance)},
+                        {"spot", offsetof(GpuLight, spot)}});
+}
+
+TEST_F(FrameLayout, ShadowViewsMatchGpuLightView) {
+    const std::vector<test::MemberOffset> members = {{"view", offsetof(GpuLightView, view)},
+                                                          {"viewProjection", offsetof(GpuLightView, viewProjection)},
+                                                          {"params", offsetof(GpuLightView, params)},
+                                                          {"params2", offsetof(GpuLightView, params2)}};
+    expectUniformArray(program(), "ShadowViews", "shadowViews", sizeof(GpuLightView), kMaxLightViews, members);
+}
+
+TEST_F(FrameLayout, BlocksSitAtTheirBindingPoints) {
+    const auto binding = [&](const char* block) { return test::resourceProperty(program(), GL_UNIFORM_BLOCK, block, GL_BUFFER_BINDING); };
+    EXPECT_EQ(binding("Frame"), static_cast<GLint>(kFrameUniformBinding));
+    EXPECT_EQ(binding("Lights"), static_cast<GLint>(kLightsBinding));
+    EXPECT_EQ(binding("ShadowViews"), static_cast<GLint>(kShadowViewsBinding));
+}
+
+}  // namespace
+}  // namespace nimbus::gpu

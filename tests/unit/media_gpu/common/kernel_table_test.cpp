@@ -1,0 +1,73 @@
+// kernel_table.cpp: the closed form of a particle's optical depth up to a point of a ray against an
+// independent quadrature, its limits, and the table the fast splats read bilinearly.
+#include "common/kernel_table.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "media_core/numeric_quadrature.h"
+
+namespace nimbus::media {
+namespace {
+
+// e^(−4.5(β² + s²)) along the ray, integrated from the sphere's entry to μ.
+double quadrature(double beta, double mu) {
+    if (beta >= 1.0) return 0.0;
+    const double h = std::sqrt(1.0 - beta * beta);
+    const double end = std::clamp(mu, -h, h);
+    if (end <= -h) return 0.0;
+    return static_cast<double>(test::integrate(
+        [&](long double s) { return std::exp(-4.5L * (static_cast<long double>(beta * beta) + s * s)); }, -h, end));
+}
+
+TEST(KernelTable, ClosedFormMatchesQuadrature) {
+    for (double beta : {0.0, 1e-6, 0.1, 0.37, 0.5, 0.8, 0.99, 0.999999})
+        for (double mu : {-1.5, -1.0, -0.6, -0.1, 0.0, 1e-7, 0.3, 0.75, 1.0, 2.0})
+            EXPECT_NEAR(kernelSegment(beta, mu), quadrature(beta, mu), 1e-12) << "beta " << beta << " mu " << mu;
+}
+
+TEST(KernelTable, LimitsAreExact) {
+    // Nothing before the entry point, the whole chord past the exit, nothing outside the sphere.
+    EXPECT_EQ(kernelSegment(0.3, -std::sqrt(1.0 - 0.09)), 0.0);
+    EXPECT_EQ(kernelSegment(0.3, 5.0), kernelSegment(0.3, std::sqrt(1.0 - 0.09)));
+    EXPECT_EQ(kernelSegment(1.0, 0.0), 0.0);
+    EXPECT_EQ(kernelSegment(2.0, 0.0), 0.0);
+    EXPECT_EQ(kernelSegment(std::nan(""), 0.0), 0.0) << "a NaN impact parameter draws nothing";
+    // Half of the centre's column lies before the closest point: √π/(2√4.5)·erf(√4.5).
+    EXPECT_NEAR(kernelSegment(0.0, 0.0), 0.5 * std::sqrt(M_PI / 4.5) * std::erf(std::sqrt(4.5)), 1e-15);
+}
+
+TEST(KernelTable, TexelsHoldTheClosedFormAtTheDomainsCorners) {
+    const int betas = 8, mus = 16;
+    const auto values = kernelTableValues(betas, mus);
+    ASSERT_EQ(values.size(), static_cast<std::size_t>(betas * mus));
+    for (int j = 0; j < mus; ++j)
+        for (int i = 0; i < betas; ++i)
+            EXPECT_FLOAT_EQ(values[static_cast<std::size_t>(j * betas + i)],
+                            static_cast<float>(kernelSegment(i / double(betas - 1), 2.0 * j / (mus - 1) - 1.0)));
+    EXPECT_EQ(values[betas - 1], 0.0f) << "β = 1 is the silhouette";
+}
+
+// What the splats lose to bilinear filtering between samples, relative to the centre's column:
+// below 0.2% (measured 0.13%, at the kink where μ reaches the chord's end), a tenth of the fast
+// tier's error against the reference.
+TEST(KernelTable, BilinearFetchIsWithinTwoTenthsOfAPercent) {
+    const int nb = kKernelTableBetas, nm = kKernelTableMus;
+    const auto t = kernelTableValues(nb, nm);
+    const double peak = kernelSegment(0.0, 1.0);
+    double worst = 0.0;
+    for (int j = 0; j + 1 < nm; ++j)
+        for (int i = 0; i + 1 < nb; ++i) {
+            auto at = [&](int a, int b) { return static_cast<double>(t[static_cast<std::size_t>(b * nb + a)]); };
+            const double bilinear = 0.25 * (at(i, j) + at(i + 1, j) + at(i, j + 1) + at(i + 1, j + 1));
+            const double exact = kernelSegment((i + 0.5) / (nb - 1), 2.0 * (j + 0.5) / (nm - 1) - 1.0);
+            worst = std::max(worst, std::abs(bilinear - exact) / peak);
+        }
+    EXPECT_LT(worst, 2e-3);
+    std::printf("[kernel table] %dx%d: worst bilinear error at cell centres %.2e of the peak column\n", nb, nm, worst);
+}
+
+}  // namespace
+}  // namespace nimbus::media

@@ -1,0 +1,73 @@
+// frame/media_renderer.cpp: the settings' defaults, and splatFootprint and automaticMediaScale,
+// what media_scale=auto is chosen from.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "nimbus/media/media_renderer.h"
+
+namespace nimbus::media {
+namespace {
+
+// A 200×100 perspective view looking down −Z from the origin with tan(yfov/2) = 0.5: at depth d
+// one metre spans 100/d pixels vertically.
+gpu::View testView() {
+    gpu::View view;
+    view.width = 200;
+    view.height = 100;
+    view.tanHalfFovY = 0.5f;
+    view.aspect = 2.0f;
+    return view;
+}
+
+TEST(SplatFootprint, OneBillboardCoversItsSquare) {
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});  // half size 10 px: a 20×20 quad
+    const SplatFootprint f = splatFootprint(particles, testView());
+    EXPECT_NEAR(f.coverage, 400.0 / 20000.0, 1e-12);
+    EXPECT_NEAR(f.radiusPixels, 10.0, 1e-9);
+}
+
+TEST(SplatFootprint, TheRadiusIsWeightedByArea) {
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});  // 10 px, area 400
+    particles.push({0.0, 0.0, -10.0}, 0.1f, 1.0f, Medium{});  // 1 px, area 4
+    const SplatFootprint f = splatFootprint(particles, testView());
+    EXPECT_NEAR(f.radiusPixels, (10.0 * 400.0 + 1.0 * 4.0) / 404.0, 1e-6);  // radius 0.1f is not 0.1
+}
+
+TEST(SplatFootprint, AParticleAroundTheEyeCoversTheScreen) {
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -0.5}, 1.0f, 1.0f, Medium{});
+    EXPECT_DOUBLE_EQ(splatFootprint(particles, testView()).coverage, 1.0);
+    EXPECT_DOUBLE_EQ(splatFootprint(ParticleSet{}, testView()).coverage, 0.0);
+}
+
+TEST(AutomaticMediaScale, FullResolutionUnlessFillDominates) {
+    EXPECT_EQ(automaticMediaScale({.coverage = 2.0, .radiusPixels = 100.0}, false), 1.0f);
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 100.0}, true), 1.0f) << "a lamp among the particles";
+}
+
+TEST(AutomaticMediaScale, KeepsEightTexelsAcrossATypicalBillboard) {
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 8.0}, false), 0.5f) << "never above ½";
+    EXPECT_FLOAT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 24.0}, false), 1.0f / 3.0f);
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 400.0}, false), 0.25f) << "never below ¼";
+}
+
+TEST(MediaRenderSettings, ZeroFieldsTakeTheirDefaultsAndChosenOnesStay) {
+    const MediaRenderSettings d = withDefaults({});
+    EXPECT_EQ(d.sliceResolution, 256);
+    EXPECT_EQ(d.impostorScale, 0.5f);
+    EXPECT_EQ(d.mediaScale, 1.0f);
+    EXPECT_EQ(d.upsampleThreshold, 0.2f);
+    EXPECT_EQ(d.slices, 0) << "zero slices means: chosen from the medium";
+    EXPECT_EQ(d.blocks, 0) << "zero blocks means: automatic";
+    const MediaRenderSettings set = withDefaults({.sliceResolution = 64, .impostorScale = 2.0f, .mediaScale = 0.5f});
+    EXPECT_EQ(set.sliceResolution, 64);
+    EXPECT_EQ(set.impostorScale, 2.0f);
+    EXPECT_EQ(set.mediaScale, 0.5f);
+    EXPECT_EQ(withDefaults(set).mediaScale, 0.5f) << "applying it twice changes nothing";
+}
+
+}  // namespace
+}  // namespace nimbus::media

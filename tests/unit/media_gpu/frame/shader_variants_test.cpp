@@ -1,0 +1,73 @@
+// Every build of the media shaders that has variants compiles and links: the passes compile a
+// variant only when a frame first needs it, so a broken combination (block_composite's 16, the
+// splats' 8) would otherwise surface in a user's frame. The descriptions are the passes' own.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "gpu/gl_test_context.h"
+#include "blocks/block_composite_pass.h"
+#include "particles/particle_lighting_pass.h"
+#include "particles/particle_pass.h"
+#include "particles/particle_splat_pass.h"
+#include "nimbus/base/error.h"
+
+namespace nimbus::media {
+namespace {
+
+class ShaderVariants : public gpu::test::GlTest {};
+
+std::string describe(const gpu::ProgramDesc& desc) {
+    std::string text = desc.compute.empty() ? desc.vertex + "+" + desc.fragment : desc.compute;
+    for (const std::string& d : desc.defines) text += " " + d;
+    return text;
+}
+
+void expectCompiles(const std::vector<gpu::ProgramDesc>& descs) {
+    for (const gpu::ProgramDesc& desc : descs) {
+        SCOPED_TRACE(describe(desc));
+        try {
+            const gpu::Program program = gpu::compileProgram(desc);
+            EXPECT_NE(program.id(), 0u);
+        } catch (const SystemError& e) {
+            ADD_FAILURE() << e.what();
+        }
+    }
+}
+
+// A LocalLightPrograms build: without and with the lamps.
+void addBothLightings(std::vector<gpu::ProgramDesc>& out, const gpu::ProgramDesc& desc) {
+    out.push_back(desc);
+    out.push_back(LocalLightPrograms::withLocalLights(desc));
+}
+
+TEST_F(ShaderVariants, ExactParticles) {
+    std::vector<gpu::ProgramDesc> descs;
+    for (bool layerLight : {false, true}) addBothLightings(descs, particlesDesc(layerLight));
+    expectCompiles(descs);
+}
+
+TEST_F(ShaderVariants, ParticleLighting) {
+    std::vector<gpu::ProgramDesc> descs;
+    for (bool exact : {false, true})
+        for (bool constant : {false, true}) addBothLightings(descs, particleLightingDesc(exact, constant));
+    expectCompiles(descs);
+}
+
+TEST_F(ShaderVariants, ParticleSplats) {
+    std::vector<gpu::ProgramDesc> descs;
+    for (bool eyeInside : {false, true})
+        for (bool lamps : {false, true})
+            for (bool constant : {false, true}) descs.push_back(particleSplatDesc(eyeInside, lamps, constant));
+    expectCompiles(descs);
+}
+
+TEST_F(ShaderVariants, BlockComposite) {
+    std::vector<gpu::ProgramDesc> descs;
+    for (std::uint8_t build = 0; build < 8; ++build) addBothLightings(descs, blockCompositeDesc(build));
+    expectCompiles(descs);
+}
+
+}  // namespace
+}  // namespace nimbus::media
