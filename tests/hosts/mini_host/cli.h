@@ -1,0 +1,31 @@
+#pragma once
+// mini_host's command line: SCENE.gltf --out F.exr [--size WxH] [--time T] [--media-out M.exr]
+// [--mode particles|blocks|billboards] [--media-scale S]: the last two fill the plugin's typed
+// settings (MediaRenderSettings), the rest of which keep the plugin's defaults (its exact tier).
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+namespace mini {
+
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct Options {
+    std::filesystem::path scene;
+    std::filesystem::path out;
+    std::filesystem::path mediaOut;  // empty: not written
+    int width = 1280, height = 720;
+    double time = 0.0;
+    std::string mode;         // empty: the plugin's default (particles)
+    float mediaScale = 0.0f;  // 0: the plugin's default (1)
+    bool help = false;
+};
+
+// Throws UsageError with a one-line reason.
+Options parseArguments(int argc, const char* const* argv);
+const char* usage();
+
+}  // namespace mini

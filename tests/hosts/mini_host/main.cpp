@@ -1,0 +1,44 @@
+// mini_host: a second host engine for the media plugin, sharing nothing with Nimbus's engine but
+// the small GL part. Renders one glTF scene headless at one time and writes EXR.
+//   exit 0: written; 1: the scene, the GL context or the output failed; 2: bad command line.
+#include <cstdio>
+#include <exception>
+
+#include "cli.h"
+#include "ecs/world.h"
+#include "egl_context.h"
+#include "media/media_module.h"
+#include "modules/render_module.h"
+#include "modules/transform_module.h"
+
+int main(int argc, char** argv) {
+    mini::Options options;
+    try {
+        options = mini::parseArguments(argc, argv);
+    } catch (const mini::UsageError& e) {
+        std::fprintf(stderr, "mini_host: %s (%s)\n", e.what(), mini::usage());
+        return 2;
+    }
+    if (options.help) {
+        std::printf("%s\n", mini::usage());
+        return 0;
+    }
+    try {
+        mini::EglContext context;  // outlives the world, whose singletons hold GL objects
+        mini::ecs::World world;
+        world.set(mini::SceneRequest{options.scene, options.time});
+        world.set(mini::RenderRequest{options.width, options.height, options.out, options.mediaOut});
+        nimbus::media::MediaRenderSettings media;
+        if (!options.mode.empty()) media.mode = nimbus::media::parseMediaMode(options.mode, "--mode");
+        media.mediaScale = options.mediaScale;
+        world.set(mini::MediaSettings{media});
+        world.import<mini::TransformModule>();
+        world.import<mini::MediaModule>();  // before the render module: its bounds feed render.gather
+        world.import<mini::RenderModule>();
+        world.progress();  // OnLoad → PostLoad → OnUpdate → PreStore → OnStore, once
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "mini_host: %s\n", e.what());
+        return 1;
+    }
+}

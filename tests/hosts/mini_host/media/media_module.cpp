@@ -1,0 +1,129 @@
+#include "media/media_module.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "media/tiny_document.h"
+#include "modules/components.h"
+#include "modules/render_module.h"
+#include "nimbus/media/emitter_scene.h"
+
+namespace mini {
+namespace media = nimbus::media;
+namespace {
+
+void spawn(ecs::World& world) {
+    const SceneAsset& asset = world.singleton<SceneAsset>();
+    MediaState& state = world.singleton<MediaState>();
+    state.document = std::make_unique<TinyDocument>(asset.scene);
+    state.scene = media::parseMediaScene(*state.document);  // refuses a bad extension with file, node and field
+    for (std::size_t i = 0; i < state.scene.nodes.size(); ++i) {
+        const media::MediaNode& node = state.scene.nodes[i];
+        const ecs::Entity entity = asset.nodeEntities.at(static_cast<std::size_t>(node.node));
+        if (!node.localPositions.empty()) world.add<StaticCloud>(entity, StaticCloud{i});
+        if (!node.emitter.is_null())
+            world.add<Emitter>(entity, Emitter{i, media::EmitterSimulation(media::parseNodeEmitter(*state.document, node), node.node)});
+    }
+}
+
+// Steps k cover [k·dt, (k+1)·dt] with the node's world transform at both ends, as the plugin's
+// simulateEmittersTo does, so a frame at time T holds the particles any host computes for T.
+void emit(ecs::World& world) {
+    const double time = world.singleton<SceneRequest>().time;
+    const MediaState& state = world.singleton<MediaState>();
+    const double dt = media::kEmitterTimeStep;
+    const long long target = std::llround(time / dt);
+    world.each<Emitter>([&](ecs::Entity, Emitter& e) {
+        if (e.steps >= target) return;
+        const auto node = static_cast<std::size_t>(state.scene.nodes[e.mediaNode].node);
+        glm::dmat4 world0 = state.document->worldTransforms(static_cast<double>(e.steps) * dt)[node];
+        for (; e.steps < target; ++e.steps) {
+            const glm::dmat4 world1 = state.document->worldTransforms(static_cast<double>(e.steps + 1) * dt)[node];
+            e.simulation.step(static_cast<double>(e.steps) * dt, dt, world0, world1);
+            world0 = world1;
+        }
+    });
+}
+
+// Entities with component C in media-node order (which is glTF node order).
+template <class C>
+std::vector<std::pair<std::size_t, ecs::Entity>> inMediaOrder(ecs::World& world) {
+    std::vector<std::pair<std::size_t, ecs::Entity>> out;
+    world.each<C>([&](ecs::Entity e, C& c) { out.push_back({c.mediaNode, e}); });
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+void gather(ecs::World& world) {
+    MediaState& state = world.singleton<MediaState>();
+    state.particles.clear();
+    for (const auto& [index, entity] : inMediaOrder<StaticCloud>(world)) {
+        const media::MediaNode& node = state.scene.nodes[index];
+        media::appendCloudParticles(state.particles, node.medium, node.localPositions, node.radii, node.densities,
+                                    world.get<WorldTransform>(entity)->matrix);
+    }
+    for (const auto& [index, entity] : inMediaOrder<Emitter>(world))
+        world.get<Emitter>(entity)->simulation.appendParticles(state.particles, state.scene.nodes[index].medium);
+    if (state.particles.empty()) return;
+    if (!state.renderer) state.renderer = std::make_unique<media::MediaRenderer>();
+    state.renderer->prepare(state.particles, world.singleton<MediaSettings>().settings);
+}
+
+// The contract's frame from mini_host's: its camera, lights, environment, shadow map and mesh boxes.
+media::HostFrame hostFrame(const FrameInput& frame, const MeshRenderer& meshes, media::HostShadowMaps& shadows, const Scene& scene) {
+    media::HostFrame host;
+    host.camera = frame.view;
+    host.lights = frame.lights;
+    host.ambient = frame.environment.ambient;
+    host.background = frame.environment.background;
+    shadows = {meshes.shadowMap(), kShadowMapSize, kPcfRadius, frame.shadowViews};
+    host.shadows = &shadows;
+    host.sceneDepth = meshes.sceneDepth();
+    for (const MeshInstance& instance : frame.instances) {
+        const Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(instance.mesh));
+        glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+        for (const Primitive& p : mesh.primitives) {
+            lo = glm::min(lo, glm::dvec3(p.boundsMin));
+            hi = glm::max(hi, glm::dvec3(p.boundsMax));
+        }
+        if (lo.x <= hi.x) host.occluders.push_back(media::occluderBox(instance.world, lo, hi));
+    }
+    return host;
+}
+
+void installHooks(ecs::World& world) {
+    MediaHooks hooks;
+    hooks.bounds = [](ecs::World& w) {
+        const MediaState& state = w.singleton<MediaState>();
+        return state.particles.empty() ? nimbus::Aabb{} : state.renderer->bounds();
+    };
+    hooks.beforeOpaque = [](ecs::World& w, const FrameInput& frame, const MeshRenderer& meshes) {
+        MediaState& state = w.singleton<MediaState>();
+        if (state.particles.empty()) return false;
+        media::HostShadowMaps shadows;
+        const media::LightSlices slices = state.renderer->renderLightSlices(hostFrame(frame, meshes, shadows, *w.singleton<SceneAsset>().scene));
+        slices.bind();
+        return slices.texture != 0;
+    };
+    hooks.afterOpaque = [](ecs::World& w, const FrameInput& frame, const MeshRenderer& meshes) {
+        MediaState& state = w.singleton<MediaState>();
+        if (state.particles.empty()) return MediaLayerRef{};
+        media::HostShadowMaps shadows;
+        const media::MediaLayer layer = state.renderer->renderMedia(hostFrame(frame, meshes, shadows, *w.singleton<SceneAsset>().scene));
+        return MediaLayerRef{layer.color, layer.size.x, layer.size.y, layer.depthUsed, layer.edgeThreshold};
+    };
+    world.set(std::move(hooks));
+}
+
+}  // namespace
+
+void MediaModule::import(ecs::World& world) {
+    if (world.trySingleton<MediaSettings>() == nullptr) world.set(MediaSettings{});
+    world.set(MediaState{});
+    installHooks(world);
+    world.system("media.spawn", ecs::Phase::PostLoad, spawn);
+    world.system("media.emit", ecs::Phase::OnUpdate, emit);
+    world.system("media.gather", ecs::Phase::PreStore, gather);
+}
+
+}  // namespace mini

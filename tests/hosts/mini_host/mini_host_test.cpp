@@ -1,0 +1,98 @@
+// mini_host, the second host, against Nimbus's renderer: every content scene rendered by both at
+// the same size and time, in each media mode and at a reduced media resolution. The plugin's passes
+// run on the same inputs in both, so the media match exactly; the images differ only where
+// mini_host's own mesh shading rounds differently (the point light of campfire.gltf, 4e-8).
+// Also: a bad command line exits 2 with one line, a broken extension exits 1 naming the field.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "../../scenes/process.h"
+#include "nimbus/assets/image_io.h"
+#include "nimbus/media/reference/image_metrics.h"
+
+namespace nimbus::test {
+namespace {
+
+// Rel-RMSE and 99th-percentile bounds of mini_host's image against `sandbox render`.
+constexpr double kImageRelRmse = 1e-6;
+constexpr double kImageP99 = 1e-6;
+
+std::filesystem::path miniHost() { return sandboxExecutable().parent_path() / "mini_host"; }
+std::string content(const std::string& scene) { return std::string(NIMBUS_CONTENT_DIR_FOR_TESTS) + "/scenes/" + scene + ".gltf"; }
+
+struct Case {
+    const char* scene;
+    const char* time;
+};
+// Times on the 1/60 s step both hosts simulate emitters on.
+const Case kScenes[] = {{"cloud", "0"},     {"smoke", "8"},         {"campfire", "4"}, {"jet", "6"},
+                        {"explosion", "0.8"}, {"cumulus", "0"}, {"cumulus_aircraft", "0"}, {"demo", "0"}};
+
+struct Mode {
+    const char* name;
+    std::vector<std::string> mini, sandbox;
+};
+const Mode kModes[] = {{"particles", {}, {}},
+                       {"blocks", {"--mode", "blocks"}, {"--mode", "blocks"}},
+                       {"billboards", {"--mode", "billboards"}, {"--mode", "billboards"}},
+                       {"half", {"--media-scale", "0.5"}, {"--set", "media_scale=0.5"}}};
+
+class MiniHostMatchesSandbox : public ::testing::TestWithParam<Case> {};
+
+TEST_P(MiniHostMatchesSandbox, InEveryMode) {
+    const Case c = GetParam();
+    TempFolder folder;
+    for (const Mode& mode : kModes) {
+        const std::string mini = (folder / (std::string(mode.name) + "_mini.exr")).string();
+        const std::string nimbus = (folder / (std::string(mode.name) + "_nimbus.exr")).string();
+        std::vector<std::string> a{content(c.scene), "--size", "256x144", "--time", c.time, "--out", mini};
+        a.insert(a.end(), mode.mini.begin(), mode.mini.end());
+        std::vector<std::string> b{"render", content(c.scene), "--size", "256x144", "--time", c.time, "--quality", "exact", "--out", nimbus};
+        b.insert(b.end(), mode.sandbox.begin(), mode.sandbox.end());
+        const ProcessResult ra = runProcess(miniHost(), a), rb = runProcess(sandboxExecutable(), b);
+        ASSERT_EQ(ra.exitCode, 0) << mode.name << ": " << ra.describe() << "\n" << ra.err;
+        ASSERT_EQ(rb.exitCode, 0) << mode.name << ": " << rb.describe() << "\n" << rb.err;
+        const media::reference::ImageMetrics m = media::reference::compareImages(assets::readImage(mini), assets::readImage(nimbus));
+        EXPECT_EQ(m.nonfinite, 0u) << mode.name;
+        EXPECT_LE(m.relRmse, kImageRelRmse) << c.scene << " " << mode.name;
+        EXPECT_LE(m.p99Abs, kImageP99) << c.scene << " " << mode.name;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(ContentScenes, MiniHostMatchesSandbox, ::testing::ValuesIn(kScenes),
+                         [](const ::testing::TestParamInfo<Case>& p) { return std::string(p.param.scene); });
+
+TEST(MiniHost, BadCommandLinesExitTwoWithOneLine) {
+    TempFolder folder;
+    const std::string out = (folder / "x.exr").string();
+    for (const std::vector<std::string>& args : {std::vector<std::string>{content("demo"), "--out", out, "--size", "160"},
+                                                 std::vector<std::string>{content("demo")},
+                                                 std::vector<std::string>{content("demo"), "--out", out, "--media-scale", "2"}}) {
+        const ProcessResult r = runProcess(miniHost(), args);
+        EXPECT_EQ(r.exitCode, 2) << r.describe();
+        EXPECT_EQ(r.errLines().size(), 1u) << r.err;
+    }
+}
+
+TEST(MiniHost, ABrokenExtensionIsRefusedNamingTheField) {
+    TempFolder folder;
+    const std::string gltf = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "extensionsUsed": ["NIMBUS_participating_media"],
+        "nodes": [{"name": "fog", "extensions": {"NIMBUS_participating_media": {"medium": {"extinction": -1}}}}]})";
+    const std::filesystem::path file = folder / "broken.gltf";
+    FILE* f = std::fopen(file.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs(gltf.c_str(), f);
+    std::fclose(f);
+    const ProcessResult r = runProcess(miniHost(), {file.string(), "--out", (folder / "x.exr").string()});
+    EXPECT_EQ(r.exitCode, 1) << r.describe();
+    ASSERT_EQ(r.errLines().size(), 1u) << r.err;
+    EXPECT_NE(r.err.find("broken.gltf"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("fog"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("medium.extinction"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace nimbus::test

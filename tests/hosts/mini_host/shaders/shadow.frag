@@ -1,0 +1,3 @@
+#version 450 core
+// Depth comes from the rasteriser.
+void main() {}
