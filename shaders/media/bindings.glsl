@@ -17,6 +17,7 @@
 #define MEDIA_SLICE_IMPOSTOR_MOMENTS_UNIT 6  // block_slices.frag
 #define MEDIA_SEAM_MASK_UNIT 9
 #define MEDIA_SLABS_UNIT 0
+#define MEDIA_HOST_DEPTH_UNIT 0       // a standard-Z host depth, re-encoded by media_host_depth
 // Storage buffers.
 #define MEDIA_PARTICLES_BINDING 3
 #define MEDIA_DRAW_ORDER_BINDING 5

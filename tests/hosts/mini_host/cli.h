@@ -1,7 +1,8 @@
 #pragma once
 // mini_host's command line: SCENE.gltf --out F.exr [--size WxH] [--time T] [--media-out M.exr]
-// [--mode particles|blocks|billboards] [--media-scale S]: the last two fill the plugin's typed
-// settings (MediaRenderSettings), the rest of which keep the plugin's defaults (its exact tier).
+// [--mode particles|blocks|billboards] [--media-scale S] [--depth reversed|standard]: mode and
+// media scale fill the plugin's typed settings (MediaRenderSettings), the rest of which keep the
+// plugin's defaults (its exact tier); --depth picks the convention of mini_host's own depth buffer.
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -21,6 +22,7 @@ struct Options {
     double time = 0.0;
     std::string mode;         // empty: the plugin's default (particles)
     float mediaScale = 0.0f;  // 0: the plugin's default (1)
+    bool standardDepth = false;  // --depth standard: the opaque pass draws standard depth
     bool help = false;
 };
 

@@ -17,7 +17,7 @@ Composer::Composer()
       emptyVertexArray_(gpu::createVertexArray()),
       framebuffer_(gpu::createFramebuffer()) {}
 
-void Composer::compose(GLuint opaqueColor, GLuint sceneDepth, const gpu::View& view, const MediaLayerRef* layer) {
+void Composer::compose(GLuint opaqueColor, GLuint sceneDepth, const gpu::View& view, bool standardDepth, const MediaLayerRef* layer) {
     const int width = view.width, height = view.height;
     if (!output_ || output_.desc().width != width || output_.desc().height != height)
         output_ = gpu::Texture({GL_TEXTURE_2D, GL_RGBA32F, width, height, 1, 1});
@@ -41,8 +41,8 @@ void Composer::compose(GLuint opaqueColor, GLuint sceneDepth, const gpu::View& v
         glProgramUniform2f(program_.id(), 1, static_cast<float>(layer->width) / static_cast<float>(width),
                            static_cast<float>(layer->height) / static_cast<float>(height));
         glProgramUniform1f(program_.id(), 2, layer->edgeThreshold);
-        const glm::vec2 ab = view.depthLinearization();
-        glProgramUniform3f(program_.id(), 3, ab.x, ab.y, view.orthographic ? 1.0f : 0.0f);
+        const glm::vec2 ab = standardDepth ? glm::vec2(view.znear, view.zfar) : view.depthLinearization();
+        glProgramUniform4f(program_.id(), 3, ab.x, ab.y, view.orthographic ? 1.0f : 0.0f, standardDepth ? 1.0f : 0.0f);
     }
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -23,8 +23,8 @@ class Composer {
 public:
     Composer();
     // output = layer.rgb + layer.a · opaque, or opaque alone when `layer` is null or empty.
-    // `sceneDepth` and `view` (its depth convention) serve the upsampling of a reduced layer.
-    void compose(GLuint opaqueColor, GLuint sceneDepth, const nimbus::gpu::View& view, const MediaLayerRef* layer);
+    // `sceneDepth` (standard or reversed for `view`'s planes) serves the upsampling of a reduced layer.
+    void compose(GLuint opaqueColor, GLuint sceneDepth, const nimbus::gpu::View& view, bool standardDepth, const MediaLayerRef* layer);
     GLuint output() const { return output_.id(); }
 
 private:

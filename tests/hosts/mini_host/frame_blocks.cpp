@@ -58,7 +58,7 @@ void FrameBlocks::upload(const FrameInput& f) {
     }
     write(lights_, lights, kMaxLights, "lights");
     write(shadowViews_, views, kMaxShadowViews, "shadow views");
-    const FrameBlock frame{f.view.viewProjection, glm::vec4(f.environment.ambient, 0.0f),
+    const FrameBlock frame{f.opaqueViewProjection, glm::vec4(f.environment.ambient, 0.0f),
                            glm::ivec4(static_cast<int>(lights.size()), kShadowMapSize, kPcfRadius, 0)};
     glNamedBufferSubData(frame_.id(), 0, sizeof(FrameBlock), &frame);
 }

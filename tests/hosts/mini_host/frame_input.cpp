@@ -29,4 +29,25 @@ nimbus::Aabb instanceBounds(const Scene& scene, const std::vector<MeshInstance>&
     return bounds;
 }
 
+glm::mat4 standardProjection(const nimbus::gpu::View& v) {
+    const double n = v.znear, f = v.zfar;
+    glm::dmat4 p(0.0);
+    if (v.orthographic) {  // depth = (z − n) / (f − n), z the view depth
+        p[0][0] = 1.0 / v.orthoHalfExtent.x;
+        p[1][1] = 1.0 / v.orthoHalfExtent.y;
+        p[2][2] = -1.0 / (f - n);
+        p[3][2] = -n / (f - n);
+        p[3][3] = 1.0;
+        return glm::mat4(p);
+    }
+    // depth = f (z − n) / ((f − n) z), or 1 − n/z without a far plane.
+    const double t = v.tanHalfFovY;
+    p[0][0] = 1.0 / (t * v.aspect);
+    p[1][1] = 1.0 / t;
+    p[2][2] = f > 0.0 ? -f / (f - n) : -1.0;
+    p[2][3] = -1.0;
+    p[3][2] = f > 0.0 ? -f * n / (f - n) : -n;
+    return glm::mat4(p);
+}
+
 }  // namespace mini

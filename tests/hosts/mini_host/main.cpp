@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
         mini::EglContext context;  // outlives the world, whose singletons hold GL objects
         mini::ecs::World world;
         world.set(mini::SceneRequest{options.scene, options.time});
-        world.set(mini::RenderRequest{options.width, options.height, options.out, options.mediaOut});
+        world.set(mini::RenderRequest{options.width, options.height, options.out, options.mediaOut, options.standardDepth});
         nimbus::media::MediaRenderSettings media;
         if (!options.mode.empty()) media.mode = nimbus::media::parseMediaMode(options.mode, "--mode");
         media.mediaScale = options.mediaScale;

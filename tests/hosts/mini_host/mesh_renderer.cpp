@@ -89,7 +89,7 @@ void MeshRenderer::renderOpaque(const FrameInput& frame, bool mediaTransmittance
     glViewport(0, 0, frame.view.width, frame.view.height);
     const glm::vec4 background(frame.environment.background, 1.0f);
     glClearNamedFramebufferfv(fbo, GL_COLOR, 0, &background[0]);
-    const float far = 0.0f;  // reversed Z: 0 is infinitely far
+    const float far = frame.standardDepth ? 1.0f : 0.0f;  // reversed Z: 0 is infinitely far
     glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &far);
 
     glUseProgram(program);
@@ -97,7 +97,7 @@ void MeshRenderer::renderOpaque(const FrameInput& frame, bool mediaTransmittance
     glBindTextureUnit(kShadowMapUnit, shadowMap_.id());
     glBindSampler(kShadowMapUnit, compareSampler_.id());
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
+    glDepthFunc(frame.standardDepth ? GL_LESS : GL_GREATER);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
     drawInstances(frame, {program, true});

@@ -18,6 +18,8 @@ namespace {
 // Rel-RMSE and 99th-percentile bounds of mini_host's image against `sandbox render`.
 constexpr double kImageRelRmse = 1e-6;
 constexpr double kImageP99 = 1e-6;
+// With a standard-depth host (AStandardDepthHostGetsTheSameImage).
+constexpr double kStandardDepthRelRmse = 1e-4;
 
 std::filesystem::path miniHost() { return sandboxExecutable().parent_path() / "mini_host"; }
 std::string content(const std::string& scene) { return std::string(NIMBUS_CONTENT_DIR_FOR_TESTS) + "/scenes/" + scene + ".gltf"; }
@@ -64,12 +66,34 @@ TEST_P(MiniHostMatchesSandbox, InEveryMode) {
 INSTANTIATE_TEST_SUITE_P(ContentScenes, MiniHostMatchesSandbox, ::testing::ValuesIn(kScenes),
                          [](const ::testing::TestParamInfo<Case>& p) { return std::string(p.param.scene); });
 
+// A host whose depth buffer is standard (0 at the near plane) hands it over as such; the plugin
+// re-encodes it (media_host_depth). The opaque scene is the same image; the media differ only by
+// the precision the two encodings keep of the scene depth where particles meet meshes.
+TEST(MiniHost, AStandardDepthHostGetsTheSameImage) {
+    TempFolder folder;
+    for (const Case c : {Case{"smoke", "8"}, Case{"cumulus_aircraft", "0"}, Case{"campfire", "4"}}) {
+        for (const char* scale : {"1", "0.5"}) {
+            const std::string mini = (folder / "standard.exr").string(), nimbus = (folder / "nimbus.exr").string();
+            const ProcessResult ra = runProcess(miniHost(), {content(c.scene), "--size", "256x144", "--time", c.time, "--depth", "standard",
+                                                             "--media-scale", scale, "--out", mini});
+            const ProcessResult rb = runProcess(sandboxExecutable(), {"render", content(c.scene), "--size", "256x144", "--time", c.time,
+                                                                      "--quality", "exact", "--set", std::string("media_scale=") + scale,
+                                                                      "--out", nimbus});
+            ASSERT_EQ(ra.exitCode, 0) << ra.describe() << "\n" << ra.err;
+            ASSERT_EQ(rb.exitCode, 0) << rb.describe() << "\n" << rb.err;
+            const media::reference::ImageMetrics m = media::reference::compareImages(assets::readImage(mini), assets::readImage(nimbus));
+            EXPECT_LE(m.relRmse, kStandardDepthRelRmse) << c.scene << " media_scale " << scale;
+        }
+    }
+}
+
 TEST(MiniHost, BadCommandLinesExitTwoWithOneLine) {
     TempFolder folder;
     const std::string out = (folder / "x.exr").string();
     for (const std::vector<std::string>& args : {std::vector<std::string>{content("demo"), "--out", out, "--size", "160"},
                                                  std::vector<std::string>{content("demo")},
-                                                 std::vector<std::string>{content("demo"), "--out", out, "--media-scale", "2"}}) {
+                                                 std::vector<std::string>{content("demo"), "--out", out, "--media-scale", "2"},
+                                                 std::vector<std::string>{content("demo"), "--out", out, "--depth", "inverted"}}) {
         const ProcessResult r = runProcess(miniHost(), args);
         EXPECT_EQ(r.exitCode, 2) << r.describe();
         EXPECT_EQ(r.errLines().size(), 1u) << r.err;

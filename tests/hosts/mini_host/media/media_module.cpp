@@ -79,6 +79,7 @@ media::HostFrame hostFrame(const FrameInput& frame, const MeshRenderer& meshes, 
     shadows = {meshes.shadowMap(), kShadowMapSize, kPcfRadius, frame.shadowViews};
     host.shadows = &shadows;
     host.sceneDepth = meshes.sceneDepth();
+    host.depthConvention = frame.standardDepth ? media::DepthConvention::Standard : media::DepthConvention::ReversedZ;
     for (const MeshInstance& instance : frame.instances) {
         const Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(instance.mesh));
         glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());

@@ -52,6 +52,8 @@ void gather(ecs::World& world) {
         framed.extend(media);
     }
     f.view = renderCamera(world, scene, request, framed);
+    f.standardDepth = request.standardDepth;
+    f.opaqueViewProjection = request.standardDepth ? standardProjection(f.view) * f.view.view : f.view.viewProjection;
     for (const auto& light : f.lights) f.shadowViews.push_back(gpu::makeLightViews(light, f.shadowBounds, f.view.origin));
     world.set(std::move(f));
 }
@@ -70,7 +72,7 @@ void draw(ecs::World& world) {
     state.meshes->renderOpaque(frame, transmittance);
     // Media plugin, step 3: the medium against the scene depth, into its layer.
     state.mediaLayer = hooks != nullptr && hooks->afterOpaque ? hooks->afterOpaque(world, frame, *state.meshes) : MediaLayerRef{};
-    state.composer->compose(state.meshes->sceneColor(), state.meshes->sceneDepth(), frame.view, &state.mediaLayer);
+    state.composer->compose(state.meshes->sceneColor(), state.meshes->sceneDepth(), frame.view, frame.standardDepth, &state.mediaLayer);
 }
 
 void write(ecs::World& world) {

@@ -19,6 +19,7 @@ struct RenderRequest {
     int width = 1280, height = 720;
     std::filesystem::path out;       // composed image (.exr)
     std::filesystem::path mediaOut;  // the media layer (.exr); empty: not written
+    bool standardDepth = false;      // draw the opaque scene with standard depth (the plugin re-encodes it)
 };
 
 // What a media module hands the render module (every member optional):

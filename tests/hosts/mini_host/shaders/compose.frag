@@ -12,12 +12,18 @@ layout(binding = 3) uniform sampler2D uSceneDepth;
 layout(location = 0) uniform int uMediaMode;   // 0 none, 1 full resolution, 2 reduced
 layout(location = 1) uniform vec2 uScale;      // layer size / frame size per axis
 layout(location = 2) uniform float uThreshold; // relative depth difference the upsampling treats as an edge
-layout(location = 3) uniform vec3 uDepth;      // xy: gpu::View::depthLinearization(), z: 1 orthographic
+layout(location = 3) uniform vec4 uDepth;      // xy: gpu::View::depthLinearization() (standard: near, far), z: 1 orthographic, w: 1 standard
 
 layout(location = 0) out vec4 outRadiance;
 
-// Reversed-Z depth-buffer value → view depth.
+// Depth-buffer value → view depth.
 float viewDepth(float d) {
+    if (uDepth.w > 0.5) {  // standard: near, far (0: infinite)
+        float n = uDepth.x, f = uDepth.y;
+        if (uDepth.z > 0.5) return n + d * (f - n);
+        if (d >= 1.0) return 1e30;
+        return f > 0.0 ? f * n / (f - d * (f - n)) : n / (1.0 - d);
+    }
     if (uDepth.z > 0.5) return uDepth.x + (1.0 - d) * (uDepth.y - uDepth.x);
     return d + uDepth.x > 0.0 ? uDepth.y / (d + uDepth.x) : 1e30;
 }

@@ -120,6 +120,8 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(storageBinding(deposit.id(), "SlicePieces"), static_cast<GLint>(kSlicePiecesBinding));
     const gpu::Program prefix = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/light_slice_prefix.frag"});
     EXPECT_EQ(samplerUnit(prefix.id(), "uSlabs"), static_cast<GLint>(kSlabsUnit));
+    const gpu::Program hostDepth = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/host_depth.frag"});
+    EXPECT_EQ(samplerUnit(hostDepth.id(), "uHostDepth"), static_cast<GLint>(kHostDepthUnit));
     const gpu::Program stencil = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/block_seam_stencil.frag"});
     EXPECT_EQ(samplerUnit(stencil.id(), "uSeamMask"), static_cast<GLint>(kSeamMaskUnit));
     EXPECT_EQ(storageBinding(composite.id(), "BlockNeighbours"), static_cast<GLint>(kBlockNeighboursBinding));

@@ -8,10 +8,30 @@
 #include "nimbus/media/media_renderer.h"
 
 namespace nimbus::media {
+namespace {
+
+// The plugin's passes clip as reversed Z needs ([0, 1] clip depth); the host's mode is restored after.
+class ClipDepthZeroToOne {
+public:
+    ClipDepthZeroToOne() {
+        glGetIntegerv(GL_CLIP_ORIGIN, &origin_);
+        glGetIntegerv(GL_CLIP_DEPTH_MODE, &depth_);
+        glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    }
+    ~ClipDepthZeroToOne() { glClipControl(static_cast<GLenum>(origin_), static_cast<GLenum>(depth_)); }
+    ClipDepthZeroToOne(const ClipDepthZeroToOne&) = delete;
+    ClipDepthZeroToOne& operator=(const ClipDepthZeroToOne&) = delete;
+
+private:
+    GLint origin_ = GL_LOWER_LEFT, depth_ = GL_ZERO_TO_ONE;
+};
+
+}  // namespace
 
 LightSlices MediaRenderer::renderLightSlices(const HostFrame& host, gpu::PassTimer* timer) {
     if (!immediate_) immediate_ = std::make_unique<ImmediateFrame>();
     ImmediateFrame& im = *immediate_;
+    const ClipDepthZeroToOne clip;
     if (im.previousFrame != nullptr) {
         glClientWaitSync(im.previousFrame, GL_SYNC_FLUSH_COMMANDS_BIT, GLuint64{10'000'000'000});  // 10 s: a frame, not a hang
         glDeleteSync(im.previousFrame);
@@ -33,6 +53,7 @@ LightSlices MediaRenderer::renderLightSlices(const HostFrame& host, gpu::PassTim
 MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* timer) {
     if (!immediate_) throw std::logic_error("MediaRenderer::renderMedia before renderLightSlices in this frame");
     ImmediateFrame& im = *immediate_;
+    const ClipDepthZeroToOne clip;
     im.giveBack(im.color);
     im.giveBack(im.depthUsed);
     im.frame.host = host;  // the slice views and uniform blocks stay from renderLightSlices
@@ -43,6 +64,10 @@ MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* tim
     if (host.sceneDepth != 0) {
         im.sceneDepth = gpu::Texture::borrow(host.sceneDepth, {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, host.camera.width, host.camera.height, 1, 1});
         im.frame.sceneDepth = graph.importTexture("host_scene_depth", im.sceneDepth);
+        if (host.depthConvention == DepthConvention::Standard) {
+            if (!im.hostDepth) im.hostDepth = std::make_unique<HostDepthPass>();
+            im.frame.sceneDepth = im.hostDepth->add(graph, im.frame.sceneDepth, host.camera);
+        }
         addMedia(graph, im.frame);
     }
     if (im.frame.color.valid()) graph.extract(im.frame.color);

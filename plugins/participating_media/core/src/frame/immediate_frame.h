@@ -1,5 +1,8 @@
 #pragma once
 // What MediaRenderer's calls for hosts without a frame graph keep between calls (immediate_frame.cpp).
+#include <memory>
+
+#include "frame/host_depth_pass.h"
 #include "nimbus/gpu/texture_pool.h"
 #include "nimbus/media/graph_frame.h"
 
@@ -15,6 +18,7 @@ struct ImmediateFrame {
     // The last frame's end: its uniform blocks are rewritten next frame, and llvmpipe does not order
     // a buffer update after queued draws that read it.
     GLsync previousFrame = nullptr;
+    std::unique_ptr<HostDepthPass> hostDepth;  // a standard-Z host's depth re-encoded, made when first needed
 
     void giveBack(const gpu::Texture*& texture) {
         if (texture != nullptr) pool.release(texture);

@@ -15,12 +15,16 @@
 //      transmittance), upsampling with "common/upsample.glsl" when MediaLayer::depthUsed is set.
 //
 // Conventions: positions sent to the GPU are relative to HostFrame::camera.origin (double on the
-// CPU), the camera projection and every depth texture are reversed Z with [0, 1] clip depth
-// (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE), depth 1 at the near plane, cleared to 0).
+// CPU). HostFrame::camera is the host's camera as the plugin draws with it: a gpu::View built from
+// the host's pose, field of view and planes (gpu::makePerspectiveView), reversed Z. The host's own
+// scene depth may be reversed Z (depth 1 at the near plane, cleared to 0) or standard (0 at the
+// near plane, cleared to 1; either GL clip-depth mode gives the same window depth): say which in
+// HostFrame::depthConvention. Shadow maps are reversed Z, drawn with gpu::LightView matrices.
 //
 // Does not: create a GL context, draw the host's meshes, present, or restore GL state: it binds its
 // own programs, framebuffers, blocks (gpu/frame_layout.h points 0–2 included) and blend state, and
 // the host sets what its next pass needs.
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -56,12 +60,20 @@ struct OccluderBox {
 };
 OccluderBox occluderBox(const glm::dmat4& world, const glm::dvec3& localMin, const glm::dvec3& localMax);
 
+enum class DepthConvention : std::uint8_t {
+    ReversedZ,  // Nimbus's: window depth 1 at the near plane, 0 at the far plane or infinity
+    Standard,   // OpenGL's usual: 0 at the near plane, 1 at the far plane (or infinity)
+};
+
 struct HostFrame {
     gpu::View camera;           // viewport = camera.width × camera.height
     std::vector<Light> lights;  // at most kMaxHostLights; indices match the host's mesh shader
     glm::vec3 ambient{0.0f};    // L_amb, radiance every particle scatters (DESIGN.md §2)
     glm::vec3 background{0.0f}; // what rays that hit nothing see
     GLuint sceneDepth = 0;      // GL_TEXTURE_2D depth of the opaque scene (renderMedia; 0: no media drawn)
+    // How sceneDepth encodes depth, for the camera's planes. Standard costs one full-screen pass
+    // (`media_host_depth`) that re-encodes it as the plugin reads depth.
+    DepthConvention depthConvention = DepthConvention::ReversedZ;
     const HostShadowMaps* shadows = nullptr;
     // World boxes of the host's meshes: `blocks` mode shades the blocks they reach exactly. Empty:
     // blocks mode treats the medium as free of meshes (a seam may show where one is seen inside).
