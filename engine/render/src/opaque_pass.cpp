@@ -10,7 +10,7 @@
 
 namespace nimbus::render {
 
-OpaquePass::OpaquePass() { program({}); }
+OpaquePass::OpaquePass() = default;
 
 const gpu::Program& OpaquePass::program(const std::vector<MeshShadingInput>& inputs) {
     std::vector<std::string> defines;

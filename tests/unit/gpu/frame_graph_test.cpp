@@ -220,6 +220,22 @@ TEST_F(FrameGraphTest, ImportedTexturesAreNeverAcquiredOrReleased) {
     EXPECT_EQ(std::count_if(log.begin(), log.end(), [](const std::string& s) { return s.rfind("acquire", 0) == 0; }), 1);
 }
 
+TEST_F(FrameGraphTest, ExtractedTexturesOutliveTheGraphUntilTheCallerReleasesThem) {
+    // Nobody in the graph reads "result": extracting it keeps its writer alive, and its texture
+    // stays acquired after execute, for the caller to read and hand back.
+    addLoggedPass("producer", [](PassBuilder& b, Handles& h) { h.a = b.create("result", kColor); });
+    const ResourceHandle result = graph.find("result");
+    graph.extract(result);
+    graph.compile();
+    EXPECT_EQ(graph.activePasses(), (std::vector<std::string>{"producer"}));
+    graph.execute();
+    const Texture* texture = graph.extracted(result);
+    ASSERT_NE(texture, nullptr);
+    EXPECT_TRUE(allocator.anyInUse()) << "an extracted texture is not released by the graph";
+    allocator.release(texture);
+    EXPECT_FALSE(allocator.anyInUse());
+}
+
 TEST_F(FrameGraphTest, FindsResourcesByName) {
     ResourceHandle created;
     graph.addPass<Handles>(

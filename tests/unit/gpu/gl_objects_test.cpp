@@ -110,6 +110,21 @@ TEST_F(GlObjects, TextureDescriptionDefaultsAndStorage) {
     EXPECT_EQ(context().takeGlErrors().count, 0u);
 }
 
+TEST_F(GlObjects, ABorrowedTextureIsNeverDeleted) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &name);
+    glTextureStorage2D(name, 1, GL_DEPTH_COMPONENT32F, 8, 4);
+    {
+        const Texture borrowed = Texture::borrow(name, {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, 8, 4, 0, 0});
+        EXPECT_EQ(borrowed.id(), name);
+        EXPECT_TRUE(static_cast<bool>(borrowed));
+        EXPECT_EQ(borrowed.desc().depth, 1) << "zero fields take their defaults, as for owned textures";
+    }
+    EXPECT_TRUE(glIsTexture(name)) << "the host still owns it";
+    glDeleteTextures(1, &name);
+    EXPECT_EQ(context().takeGlErrors().count, 0u);
+}
+
 TEST_F(GlObjects, ManyHandlesInAVectorReleaseAll) {
     std::vector<GLuint> names;
     {
