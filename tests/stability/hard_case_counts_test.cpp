@@ -141,25 +141,22 @@ TEST_F(StabilityTest, MillionParticlesWithinBound) {
 // Memory (settledResidentBytes: llvmpipe keeps GL buffers and textures in process memory, so this
 // counts GPU allocations too), per mode, before its first frame, after two frames, and after each
 // of six more frames of the same state:
-//   - Sized to the count: the first two frames add at most 300 bytes per particle. Particles mode
+//   - Sized to the count: the first two frames add at most 350 bytes per particle. Particles mode
 //     needs ~200 B per particle (the frame's ParticleSet 61 B, the GPU copy 64 B and its staging
 //     copy 64 B, sort keys, order and its GPU copy 12 B), blocks mode ~30 B more (partition,
 //     items and their GPU copy), less what reuses the warm-up session's freed pages. The frame's
 //     fixed cost is paid by that warm-up; llvmpipe's binning scenes still move the figure by one
-//     36 MiB scene either way. Measured over three runs: particles +91 to +190 B, then blocks
-//     +77 to +114 B per particle.
+//     or two 36 MiB scenes either way (particles 217–303 B over seven runs, blocks 83–150 B).
 //   - Bounded: none of eight more frames is more than 160 MiB above the two-frame level, and the
-//     median of the last four is at most 64 MiB above the median of the first four (a leak of
-//     17 MB per frame, 17 B per particle, fails). The margins are llvmpipe's: frames of the same
-//     state move by up to ~120 MB either way (measured: particles 525–574 MB, blocks 600–638 MB,
-//     no trend over 12 frames; one CI run's blocks frames stepped 0 84 121 84 84 113 113 84 MB;
-//     the medians of two halves of 8 frames differed by −22 to +42 MB over six runs). Comparing
-//     the highest frame of each half of six failed once in four runs.
+//     median of the last four is at most 96 MiB above the median of the first four (a leak of
+//     26 MB per frame, 26 B per particle, fails). The margins are llvmpipe's: frames of the same
+//     state step by one binning scene (about ±37 MB) either way with no trend, so the medians of
+//     two halves can differ by two scenes (67 MB seen) without any leak.
 TEST_F(StabilityTest, MillionParticlesMemoryIsBounded) {
     constexpr double kParticles = 1e6;
-    constexpr double kBytesPerParticle = 300.0;
+    constexpr double kBytesPerParticle = 350.0;
     constexpr double kBand = 160.0 * (1 << 20);
-    constexpr double kTrend = 64.0 * (1 << 20);
+    constexpr double kTrend = 96.0 * (1 << 20);
     constexpr int kFrames = 8;
     // The frame's fixed cost is paid first, in a session of the same scene that is then closed:
     // shader programs and llvmpipe's compiled variants, shadow maps and slices, and llvmpipe's
