@@ -79,8 +79,7 @@ QuadratureResult MediumQuadrature::integrate(const ViewRayMedium& medium, const 
     }
 
     // The floor scales with what the medium on this ray can send at most: its opacity times the
-    // scene's radiance. A fixed floor was 3% of a pixel behind τ 1e-5 particles, and the image
-    // changed by 1.2% when the tolerance was halved.
+    // scene's radiance, so faint media are still refined (docs/design-notes.md).
     double rayOpacity = 0.0;
     if (!clusters.empty()) rayOpacity = opacity(clusters.back().opticalDepthBefore + clusters.back().opticalDepth);
     const double floor = settings.absoluteFloor * std::min(rayOpacity, 1.0);
