@@ -94,17 +94,20 @@ def png(width, height, color_type, bit_depth, rows):
 
 
 def write_images():
-    d = os.path.join(HERE, "images")
+    # Images live beside the files that use them: a URI may not leave the glTF file's folder.
+    scenes, malformed = os.path.join(HERE, "scenes", "images"), os.path.join(HERE, "malformed", "images")
     # 2x2 each; the tests check the expanded RGBA8 of pixel (x=1, y=0) and (0, 1).
-    write_bytes(os.path.join(d, "grey.png"), png(2, 2, 0, 8, [bytes([10, 200]), bytes([30, 40])]))
-    write_bytes(os.path.join(d, "grey_alpha.png"), png(2, 2, 4, 8, [bytes([10, 11, 200, 201]), bytes([30, 31, 40, 41])]))
-    write_bytes(os.path.join(d, "rgb.png"), png(2, 2, 2, 8, [bytes([1, 2, 3, 4, 5, 6]), bytes([7, 8, 9, 10, 11, 12])]))
-    write_bytes(os.path.join(d, "rgba16.png"),
+    write_bytes(os.path.join(scenes, "grey.png"), png(2, 2, 0, 8, [bytes([10, 200]), bytes([30, 40])]))
+    write_bytes(os.path.join(scenes, "grey_alpha.png"), png(2, 2, 4, 8, [bytes([10, 11, 200, 201]), bytes([30, 31, 40, 41])]))
+    rgb = png(2, 2, 2, 8, [bytes([1, 2, 3, 4, 5, 6]), bytes([7, 8, 9, 10, 11, 12])])
+    write_bytes(os.path.join(scenes, "rgb.png"), rgb)
+    write_bytes(os.path.join(malformed, "rgb.png"), rgb)
+    write_bytes(os.path.join(scenes, "rgba16.png"),
                 png(2, 2, 6, 16, [struct.pack(">8H", 0, 0, 0, 65535, 65535, 32896, 0, 65535),
                                   struct.pack(">8H", 0, 65535, 0, 0, 257, 514, 771, 1028)]))
     # Claims 20000 x 1 pixels: refused as absurd before any pixel is decoded.
-    write_bytes(os.path.join(d, "too_wide.png"), png(20000, 1, 0, 8, [bytes(20000)]))
-    write_bytes(os.path.join(d, "not_an_image.png"), b"this is not a PNG file\n")
+    write_bytes(os.path.join(malformed, "too_wide.png"), png(20000, 1, 0, 8, [bytes(20000)]))
+    write_bytes(os.path.join(malformed, "not_an_image.png"), b"this is not a PNG file\n")
 
 
 # ---------------------------------------------------------------- valid scenes ------------------
@@ -223,9 +226,9 @@ def scene_animated():
 def scene_images():
     """Four external PNGs of different channel layouts, one data-URI PNG and one in a buffer view."""
     g = Gltf()
-    rgb = open(os.path.join(HERE, "images", "rgb.png"), "rb").read()
-    g.doc["images"] = [{"uri": "../images/grey.png"}, {"uri": "../images/grey_alpha.png"}, {"uri": "../images/rgb.png"},
-                       {"uri": "../images/rgba16.png"},
+    rgb = open(os.path.join(HERE, "scenes", "images", "rgb.png"), "rb").read()
+    g.doc["images"] = [{"uri": "images/grey.png"}, {"uri": "images/grey_alpha.png"}, {"uri": "images/rgb.png"},
+                       {"uri": "images/rgba16.png"},
                        {"uri": "data:image/png;base64," + base64.b64encode(rgb).decode()},
                        {"bufferView": g.view(rgb), "mimeType": "image/png", "name": "in a buffer view"}]
     g.doc["samplers"] = [{"magFilter": 9728, "minFilter": 9986, "wrapS": 33071, "wrapT": 33648}]
@@ -327,12 +330,16 @@ def write_malformed(glb_data):
     malformed("missing_image_file.gltf", missing_image)
 
     def too_wide(g):
-        g.doc["images"] = [{"uri": "../images/too_wide.png"}]
+        g.doc["images"] = [{"uri": "images/too_wide.png"}]
     malformed("image_too_large.gltf", too_wide)
 
     def not_image(g):
-        g.doc["images"] = [{"uri": "../images/not_an_image.png", "name": "Garbage"}]
+        g.doc["images"] = [{"uri": "images/not_an_image.png", "name": "Garbage"}]
     malformed("image_not_decodable.gltf", not_image)
+
+    def outside_folder(g):
+        g.doc["images"] = [{"uri": "images/../../scenes/images/rgb.png", "name": "Elsewhere"}]
+    malformed("image_outside_folder.gltf", outside_folder)
 
     def node_cycle(g):
         g.doc["nodes"] = [{"name": "A", "children": [1]}, {"name": "B", "children": [2]}, {"name": "C", "children": [0]}]
@@ -416,7 +423,7 @@ def write_malformed(glb_data):
     malformed("buffer_length_mismatch.gltf", short_data_uri)
 
     def texcoord_missing(g):
-        g.doc["images"] = [{"uri": "../images/rgb.png"}]
+        g.doc["images"] = [{"uri": "images/rgb.png"}]
         g.doc["textures"] = [{"source": 0}]
         g.doc["materials"] = [{"name": "Textured", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}}]
         g.doc["meshes"][0]["primitives"][0]["material"] = 0

@@ -20,6 +20,10 @@ void checkExternalFile(const GltfCheckInput& in, const JsonPlace& place, const s
     if (hasMalformedPercentEscape(uri)) place.fail("uri", "malformed percent-encoding in \"" + uri + "\"");
     if (uri.find("://") != std::string::npos || std::filesystem::path(decodeUriPath(uri)).is_absolute())
         place.fail("uri", "only data URIs and paths relative to the glTF file are supported, not \"" + uri + "\"");
+    // A scene reads its own folder and below, never a path a file names elsewhere ("../../...").
+    const std::filesystem::path relative = std::filesystem::path(decodeUriPath(uri)).lexically_normal();
+    if (!relative.empty() && *relative.begin() == "..")
+        place.fail("uri", "\"" + decodeUriPath(uri) + "\" lies outside the glTF file's folder (only files in it or below it are read)");
     const std::filesystem::path path = resolveUri(in.baseDirectory, uri);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))

@@ -78,6 +78,7 @@ INSTANTIATE_TEST_SUITE_P(
         MalformedCase{"missing_image_file.gltf", {"images[0]", "uri", "no such file \"no such image.png\""}},
         MalformedCase{"image_too_large.gltf", {"images[0]", "uri", "20000x1", "16384"}},
         MalformedCase{"image_not_decodable.gltf", {"image \"Garbage\" (images[0])", "uri", "not a PNG, JPEG or WebP"}},
+        MalformedCase{"image_outside_folder.gltf", {"image \"Elsewhere\" (images[0])", "uri", "outside the glTF file's folder"}},
         MalformedCase{"truncated.glb", {"GLB container", "length", "truncated"}},
         MalformedCase{"glb_version_1.glb", {"GLB container", "version", "GLB version 1"}},
         MalformedCase{"empty.gltf", {"empty"}},
