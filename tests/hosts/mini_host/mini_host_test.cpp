@@ -5,6 +5,7 @@
 // Also: a bad command line exits 2 with one line, a broken extension exits 1 naming the field.
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct Case {
     const char* scene;
     const char* time;
 };
+void PrintTo(const Case& c, std::ostream* os) { *os << c.scene << " at t=" << c.time << " s"; }
 // Times on the 1/60 s step both hosts simulate emitters on.
 const Case kScenes[] = {{"cloud", "0"},     {"smoke", "8"},         {"campfire", "4"}, {"jet", "6"},
                         {"explosion", "0.8"}, {"cumulus", "0"}, {"cumulus_aircraft", "0"}, {"demo", "0"}};
