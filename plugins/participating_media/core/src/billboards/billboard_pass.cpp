@@ -5,7 +5,7 @@
 #include "billboards/billboard_pass.h"
 
 #include "common/kernel_table.h"
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 

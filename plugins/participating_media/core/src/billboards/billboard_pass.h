@@ -1,7 +1,7 @@
 #pragma once
 // The `billboards` pass (shaders/media/billboards.*).
 #include "common/particle_buffer.h"
-#include "frame/media_target.h"
+#include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/media/graph_frame.h"

@@ -10,7 +10,7 @@
 #include "blocks/block_seam_stencil_pass.h"
 #include "common/local_light_programs.h"
 #include "common/particle_buffer.h"
-#include "frame/media_target.h"
+#include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/media/graph_frame.h"

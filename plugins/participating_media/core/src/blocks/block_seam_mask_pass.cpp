@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 #include "nimbus/media/gpu_bindings.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"

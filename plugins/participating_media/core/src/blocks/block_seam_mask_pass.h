@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "blocks/block_gpu_buffers.h"
-#include "frame/media_target.h"
+#include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/media/graph_frame.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The `block_seam_stencil` pass (shaders/media/block_seam_stencil.frag): the seam mask as stencil 1
 // at the media target's size, where the composite shades a seam run exactly.
-#include "frame/media_target.h"
+#include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"
 

@@ -2,7 +2,7 @@
 // of its own, with the host's textures borrowed into it and the results kept past it.
 #include <memory>
 
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 #include "frame/immediate_frame.h"
 #include "nimbus/base/error.h"
 #include "nimbus/media/media_renderer.h"

@@ -20,7 +20,7 @@
 #include "upsample/media_depth_used_pass.h"
 #include "nimbus/base/error.h"
 #include "nimbus/media/slice_plan.h"
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 #include "frame/immediate_frame.h"
 #include "common/particle_buffer.h"
 #include "particles/splat_floor.h"

@@ -5,7 +5,7 @@
 
 #include "particles/particle_lighting_pass.h"
 
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 

@@ -3,7 +3,7 @@
 // multiplied by 1 − α per particle), so the compose pass needs no extra state.
 #include "particles/particle_pass.h"
 
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 

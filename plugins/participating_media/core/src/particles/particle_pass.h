@@ -4,7 +4,7 @@
 
 #include "common/local_light_programs.h"
 #include "common/particle_buffer.h"
-#include "frame/media_target.h"
+#include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/shader_program.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The `particle_splats` pass of the fast tiers (shaders/media/particle_splats.*).
 #include "common/particle_buffer.h"
-#include "frame/media_target.h"
+#include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/shader_program.h"

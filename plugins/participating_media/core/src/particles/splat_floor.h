@@ -8,7 +8,7 @@
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/frame_layout.h"
 #include "nimbus/gpu/view.h"
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 #include "common/particle_buffer.h"
 
 namespace nimbus::media {

@@ -3,7 +3,7 @@
 // the media target with depth awareness (shaders/common/upsample.glsl).
 #include "upsample/media_depth_used_pass.h"
 
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The `media_depth_used` pass (shaders/media/depth_used.frag).
-#include "frame/media_target.h"
+#include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/media/graph_frame.h"

@@ -1,4 +1,4 @@
-#include "frame/frame_blocks.h"
+#include "common/frame_blocks.h"
 
 #include <cstddef>
 
