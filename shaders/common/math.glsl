@@ -10,7 +10,7 @@ float oneMinusExpNeg(float x) {
     return x < 1e-3 ? x * (1.0 - x * (0.5 - x * (1.0 / 6.0))) : 1.0 - exp(-x);
 }
 
-// The cube face of a direction: 0..5 = +X −X +Y −Y +Z −Z (render/light_views.h cubeFace).
+// The cube face of a direction: 0..5 = +X −X +Y −Y +Z −Z (gpu/light_views.h cubeFace).
 int cubeFace(vec3 d) {
     vec3 a = abs(d);
     if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0 : 1;

@@ -19,7 +19,7 @@ using media::MediaMode;
 // inside the sphere; a billboard in front of the eye but with its centre behind it is clipped away
 // (the particle vanishes); the chord's part behind the eye must not count (the medium starts at the
 // eye); a block containing the eye has no sensible screen rectangle.
-// What prevents it: shaders/media/particles.vert covers the whole screen when the eye is in or near
+// What prevents it: shaders/media/particles/particles.vert covers the whole screen when the eye is in or near
 // the sphere; particles.frag starts the chord at the eye (u0 = max(0, t_enter) − t_closest);
 // block_impostors.frag likewise (lo = max(−h, −t_closest)); impostor_atlas.cpp blockFootprints
 // gives a block that reaches behind the near plane the whole view. Reference: camera_rays.h, the
@@ -99,7 +99,7 @@ TEST_F(StabilityTest, SurfaceThroughCentresGrazingWithinBound) {
 // centres, chords, depths and shadow-map/slice lookups computed in world space jitter by
 // centimetres; view matrices with a 1e5 translation lose the eye-relative digits.
 // What prevents it: world transforms and particle positions are double (ParticleSet::position,
-// media_scene.cpp); every GPU position is relative to the camera (render/view.h View::origin,
+// media_scene.cpp); every GPU position is relative to the camera (gpu/view.h View::origin,
 // particle_buffer.cpp upload subtracts the origin in double before converting); light views and
 // slice planning work relative to the same origin (light_views.cpp makeLightViews,
 // slice_plan.cpp estimateSlices); the reference is all double.

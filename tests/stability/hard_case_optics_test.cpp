@@ -29,7 +29,7 @@ using media::MediaMode;
 //     light_transport.cpp LightTransport::transmittanceToLight (τ ≥ 64 counts as opaque); the
 //     quadrature works in v = 1 − e^−τ (medium_quadrature.cpp MediumQuadrature::integrate), so
 //     an opaque cluster is a finite interval of v and nothing behind it is evaluated.
-//   real time: shaders/common/math.glsl oneMinusExpNeg; shaders/media/optics.glsl
+//   real time: shaders/common/math.glsl oneMinusExpNeg; shaders/media/common/optics.glsl
 //     chordShadingPoint (fraction → 1/τ, never 0/0) and erfInverse (argument clamped to
 //     ±0.9999999, no log(0)); lighting.glsl scatteredLight (exp(−τ) of the slice value, 0 not
 //     NaN); block_composite.frag divides the sums by τ only where τ > 0.
@@ -76,10 +76,10 @@ TEST_F(StabilityTest, OpticalDepth1eMinus5WithinBound) {
 // camera looking along ±Y is degenerate for the same reason; billboards oriented with a helper
 // axis parallel to the eye axis collapse; cos θ = ±1 exactly puts the Henyey–Greenstein
 // denominator at its minimum (1 − |g|)².
-// What prevents it: engine/render/src/light_views.cpp lookAlong (replaces an up hint within
+// What prevents it: engine/gpu/src/light_views.cpp lookAlong (replaces an up hint within
 // 0.99 of the axis); cameras come from the node's rotation, not a look-at (assets
-// resolveCamera); shaders/media/particles.vert picks the billboard helper axis by |axis.y|;
-// shaders/media/optics.glsl henyeyGreenstein forms its denominator from |a ∓ b|², not a float cos θ.
+// resolveCamera); shaders/media/particles/particles.vert picks the billboard helper axis by |axis.y|;
+// shaders/media/common/optics.glsl henyeyGreenstein forms its denominator from |a ∓ b|², not a float cos θ.
 // Bound: 15% each. Measured: parallel particles 0.09%, blocks 0.24%; antiparallel particles 4.6%,
 // blocks 3.3%; perpendicular particles 0.96%, blocks 0.91%. Antiparallel particles were 1.5% while
 // each particle took the light's transmittance at one point: the other particles' mass along the
@@ -125,9 +125,9 @@ TEST_F(StabilityTest, LightPerpendicularToViewWithinBound) {
 // light views are perspective from inside particle spheres (a tangent-cone billboard needs
 // sqrt(d² − R²) < 0); the light's own position is inside particles, so "the part of the particle
 // in front of the light" has to be clipped; at d = 0 the direction to the light is undefined.
-// What prevents it: shaders/media/light_slices.vert covers the whole view when the light is inside
+// What prevents it: shaders/media/slices/light_slices.vert covers the whole view when the light is inside
 // or at a sphere; light_slices.frag starts perspective light rays at the light
-// (start = max(−h, −t_closest)); shaders/media/local_light_segment.glsl integrates the light along
+// (start = max(−h, −t_closest)); shaders/media/common/local_light_segment.glsl integrates the light along
 // each particle's segment with u = u_l + b·tan φ (b ≥ 1e-4 R) instead of sampling the spike;
 // shaders/common/lights.glsl sampleLight and assets light_model.cpp sampleLight return zero
 // irradiance within 1e-9 m of the light; light_views.cpp perspectiveView keeps znear > 0.
@@ -156,7 +156,7 @@ TEST_F(StabilityTest, SpotLightInsideCloudBlocksWithinBound) {
 // by its listed neighbours: e^(their mass behind the point) undoes what the blend will take away.
 // For τ = 1e4 that factor is inf, and the blend's transmittance of 0 turned it into NaN pixels
 // (117 in particles, 29 in blocks at 160×90).
-// What prevents it: shaders/media/lamp_neighbourhood.glsl caps the factor's log at 50 (a layer
+// What prevents it: shaders/media/common/lamp_neighbourhood.glsl caps the factor's log at 50 (a layer
 // behind more than e^−50 of transmittance has nothing a float can give back).
 // Bound: 15%. Measured: particles 5e-6, blocks 5e-6 (4.6% when this case was written).
 const HardCase kSpotInOpaqueCloud{.name = "spot_in_opaque_cloud", .scene = "spot_in_opaque_cloud.gltf"};
@@ -181,7 +181,7 @@ TEST_F(StabilityTest, SpotLightAmongOpaqueParticlesBlocksWithinBound) {
 // (both modes: those pixels black, rel-RMSE 47×). A block of such particles is no smooth medium:
 // shaded at uniform points of its [front, back] with one transmittance each, the lit pixels stayed
 // 15% too dark and 40% too bright with the own shadow fixed (RMS-relative error 29%).
-// What prevents it: shaders/media/own_optical_depth.glsl particleLightDepth (what the slices hold
+// What prevents it: shaders/media/common/own_optical_depth.glsl particleLightDepth (what the slices hold
 // of the particle itself is recomputed, taken out and replaced by its exact optical depth where
 // they do not resolve it); block_own_optical_depth.glsl does the same for a block's particles,
 // and block_lighting.glsl shades such a block from its own particles (listedShadingPoint and the
@@ -255,7 +255,7 @@ TEST_F(StabilityTest, CloudTopAlongSunWithinBound) {
 // of the light's optical depth there. Along the sun τl falls exactly as the view's optical depth
 // grows, so every point of the ray sends the same light, and e^−τl at one point (Jensen's gap)
 // made the phase peak 3× too dark (particles 30% rel-RMSE).
-// What prevents it: shaders/media/lighting.glsl layerLightTransmittance integrates e^−τl over the
+// What prevents it: shaders/media/common/lighting.glsl layerLightTransmittance integrates e^−τl over the
 // layer in closed form with τl linear in the view's optical depth (from the slices at the layer's
 // entry and shading point). Blocks shade two pieces per block and erred 8% before it.
 // Bound: 15%. Measured: particles 0.67%, blocks 4.3%.

@@ -53,7 +53,7 @@ TEST_F(CloudBlocksTest, SeamBandErrorIsBelowParticlesWithoutSoftParticles) {
 // block_shading=seam shades exactly (as block_shading=exact does the whole of each block where a
 // mesh is seen in the medium) only near the texels where the wing lies among a block's particles
 // (block_seam_mask_pass.cpp), fading to the smooth shading over the next mask cell
-// (shaders/media/block_seam.glsl). So in the seam band its frame is exact's to the bit, and more
+// (shaders/media/blocks/block_seam.glsl). So in the seam band its frame is exact's to the bit, and more
 // than three cells from the wing, block_shading=smooth's. Smooth and exact differ by up to 3%
 // across this cloud, so both comparisons can fail.
 TEST_F(CloudBlocksTest, SeamShadingIsExactAtTheSeamAndSmoothAwayFromIt) {

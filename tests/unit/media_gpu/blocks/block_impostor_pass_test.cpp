@@ -1,7 +1,7 @@
 // Tests plugins/participating_media/core/src/blocks/block_impostor_pass.cpp on a headless GL context:
 // BlockImpostorRenderer draws a few blocks' depth impostors into an atlas we own, and every texel
 // is checked against the closed form along the exact ray the texel stands for
-// (shaders/media/block_data.glsl tileNdc, shaders/media/view_rays.glsl viewRay):
+// (shaders/media/blocks/block_data.glsl tileNdc, shaders/media/common/view_rays.glsl viewRay):
 //   a = Σ over the block's particles of media::particleOpticalDepth along the ray from its start,
 //   r = front = min over those particles of the entry of its mass interval, −g = back = max of exits,
 // where a particle's mass interval is the ±√3·s (s = R/3) stretch around the closest point, clipped

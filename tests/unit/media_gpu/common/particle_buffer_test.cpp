@@ -18,7 +18,7 @@ double kernelShareUpTo(double z) {
     return (std::erf(z / std::sqrt(2.0)) + edge) / (2.0 * edge);
 }
 
-// shaders/media/optics.glsl shadingDepthFraction: v̄/τ of a layer of optical depth τ.
+// shaders/media/common/optics.glsl shadingDepthFraction: v̄/τ of a layer of optical depth τ.
 double shadingDepthFraction(double tau) { return (1.0 - (1.0 + tau) * std::exp(-tau)) / (tau * -std::expm1(-tau)); }
 
 TEST(VisibleDepthOffset, AThinParticleIsSeenAtItsCentre) {

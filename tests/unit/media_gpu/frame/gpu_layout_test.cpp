@@ -1,4 +1,4 @@
-// The C++ mirrors of the media shaders' blocks (particle_buffer.h GpuParticle, block_passes.h
+// The C++ mirrors of the media shaders' blocks (particle_buffer.h GpuParticle, block_gpu_buffers.h
 // GpuBlockTile, gpu_bindings.h GpuSliceViews) and every binding point of gpu_bindings.h, against
 // the layout and bindings the driver gives the programs that read them.
 #include <cstddef>
@@ -27,7 +27,7 @@ GLint storageBinding(GLuint program, const char* block) {
 }
 
 TEST_F(MediaGpuLayout, ParticlesMatchGpuParticle) {
-    const gpu::Program program = gpu::compileProgram({.vertex = "media/particles.vert", .fragment = "media/particles.frag"});
+    const gpu::Program program = gpu::compileProgram({.vertex = "media/particles/particles.vert", .fragment = "media/particles/particles.frag"});
     expectMembers(program.id(), GL_BUFFER_VARIABLE, "particles[0].",
                   {{"positionRadius", offsetof(GpuParticle, positionRadius)},
                    {"albedoSigma", offsetof(GpuParticle, albedoSigma)},
@@ -40,7 +40,7 @@ TEST_F(MediaGpuLayout, ParticlesMatchGpuParticle) {
 
 TEST_F(MediaGpuLayout, BlockTilesMatchGpuBlockTile) {
     const gpu::Program program =
-        gpu::compileProgram({.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"});
+        gpu::compileProgram({.vertex = "media/blocks/block_composite.vert", .fragment = "media/blocks/block_composite.frag"});
     expectMembers(program.id(), GL_BUFFER_VARIABLE, "blockTiles[0].",
                   {{"rect", offsetof(GpuBlockTile, rect)},
                    {"atlas", offsetof(GpuBlockTile, atlas)},
@@ -52,8 +52,8 @@ TEST_F(MediaGpuLayout, BlockTilesMatchGpuBlockTile) {
 }
 
 TEST_F(MediaGpuLayout, ParticleLightIsReadWhereTheLightingPassWritesIt) {
-    const gpu::Program lighting = gpu::compileProgram({.compute = "media/particle_lighting.comp"});
-    const gpu::Program splats = gpu::compileProgram({.vertex = "media/particle_splats.vert", .fragment = "media/particle_splats.frag"});
+    const gpu::Program lighting = gpu::compileProgram({.compute = "media/particles/particle_lighting.comp"});
+    const gpu::Program splats = gpu::compileProgram({.vertex = "media/particles/particle_splats.vert", .fragment = "media/particles/particle_splats.frag"});
     EXPECT_EQ(storageBinding(lighting.id(), "ParticleLight"), static_cast<GLint>(kParticleLightBinding));
     EXPECT_EQ(storageBinding(splats.id(), "ParticleLight"), static_cast<GLint>(kParticleLightBinding));
     EXPECT_EQ(storageBinding(lighting.id(), "Particles"), static_cast<GLint>(kParticlesBinding));
@@ -62,7 +62,7 @@ TEST_F(MediaGpuLayout, ParticleLightIsReadWhereTheLightingPassWritesIt) {
 TEST_F(MediaGpuLayout, SliceViewsMatchGpuSliceViews) {
     // The host include as a host's mesh shader sees it, and inside the plugin's own programs.
     const gpu::Program host = gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = {"MEDIA_LIGHT_TRANSMITTANCE"}});
-    const gpu::Program particles = gpu::compileProgram({.vertex = "media/particles.vert", .fragment = "media/particles.frag"});
+    const gpu::Program particles = gpu::compileProgram({.vertex = "media/particles/particles.vert", .fragment = "media/particles/particles.frag"});
     for (GLuint program : {host.id(), particles.id()}) {
         const std::pair<const char*, std::size_t> members[] = {
             {"mediaSliceCount", offsetof(GpuSliceViews, count)},
@@ -106,23 +106,23 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     const gpu::Program lamps = gpu::compileProgram(LocalLightPrograms::withLocalLights(particlesDesc(true)));
     EXPECT_EQ(storageBinding(lamps.id(), "LampNeighbourhoods"), static_cast<GLint>(kLampNeighbourhoodBinding));
 
-    const gpu::Program slices = gpu::compileProgram({.vertex = "media/block_slices.vert", .fragment = "media/block_slices.frag"});
+    const gpu::Program slices = gpu::compileProgram({.vertex = "media/blocks/block_slices.vert", .fragment = "media/blocks/block_slices.frag"});
     EXPECT_EQ(samplerUnit(slices.id(), "uImpostorDepths"), static_cast<GLint>(kImpostorDepthsUnit));
     EXPECT_EQ(samplerUnit(slices.id(), "uImpostorMoments"), static_cast<GLint>(kSliceImpostorMomentsUnit));
     EXPECT_EQ(storageBinding(slices.id(), "ImpostorItems"), static_cast<GLint>(kImpostorItemsBinding));
     EXPECT_EQ(storageBinding(slices.id(), "BlockTiles"), static_cast<GLint>(kBlockTilesBinding));
 
-    const gpu::Program lampSlices = gpu::compileProgram({.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag",
+    const gpu::Program lampSlices = gpu::compileProgram({.vertex = "media/slices/light_slices.vert", .fragment = "media/slices/light_slices.frag",
                                                          .defines = {"SLICE_PARTICLE_LIST"}});
     EXPECT_EQ(storageBinding(lampSlices.id(), "LampSliceParticles"), static_cast<GLint>(kLampSliceParticlesBinding));
     const gpu::Program deposit =
-        gpu::compileProgram({.vertex = "media/light_slice_deposit.vert", .fragment = "media/light_slice_deposit.frag"});
+        gpu::compileProgram({.vertex = "media/slices/light_slice_deposit.vert", .fragment = "media/slices/light_slice_deposit.frag"});
     EXPECT_EQ(storageBinding(deposit.id(), "SlicePieces"), static_cast<GLint>(kSlicePiecesBinding));
-    const gpu::Program prefix = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/light_slice_prefix.frag"});
+    const gpu::Program prefix = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_prefix.frag"});
     EXPECT_EQ(samplerUnit(prefix.id(), "uSlabs"), static_cast<GLint>(kSlabsUnit));
-    const gpu::Program hostDepth = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/host_depth.frag"});
+    const gpu::Program hostDepth = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/frame/host_depth.frag"});
     EXPECT_EQ(samplerUnit(hostDepth.id(), "uHostDepth"), static_cast<GLint>(kHostDepthUnit));
-    const gpu::Program stencil = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/block_seam_stencil.frag"});
+    const gpu::Program stencil = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/blocks/block_seam_stencil.frag"});
     EXPECT_EQ(samplerUnit(stencil.id(), "uSeamMask"), static_cast<GLint>(kSeamMaskUnit));
     EXPECT_EQ(storageBinding(composite.id(), "BlockNeighbours"), static_cast<GLint>(kBlockNeighboursBinding));
 }

@@ -15,7 +15,7 @@ namespace {
 }
 
 BillboardPass::BillboardPass()
-    : program_(gpu::compileProgram({.vertex = "media/billboards.vert", .fragment = "media/billboards.frag"})),
+    : program_(gpu::compileProgram({.vertex = "media/billboards/billboards.vert", .fragment = "media/billboards/billboards.frag"})),
       kernelTable_(createKernelTable()) {}
 
 gpu::ResourceHandle BillboardPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,

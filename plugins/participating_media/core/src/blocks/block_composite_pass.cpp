@@ -24,7 +24,7 @@ LocalLightPrograms& BlockCompositePass::programs(std::uint8_t build) {
 }
 
 gpu::ProgramDesc blockCompositeDesc(std::uint8_t build) {
-    gpu::ProgramDesc desc{.vertex = "media/block_composite.vert", .fragment = "media/block_composite.frag"};
+    gpu::ProgramDesc desc{.vertex = "media/blocks/block_composite.vert", .fragment = "media/blocks/block_composite.frag"};
     if (build & kBlockExactCut) desc.defines.push_back("BLOCK_EXACT_CUT");
     if (build & kBlockOwnParticles) desc.defines.push_back("BLOCK_OWN_PARTICLES");
     if (build & kBlockExactShading) desc.defines.push_back("BLOCK_EXACT_SHADING");

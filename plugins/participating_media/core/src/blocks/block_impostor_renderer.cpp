@@ -10,7 +10,7 @@
 namespace nimbus::media {
 
 BlockImpostorRenderer::BlockImpostorRenderer() {
-    program_ = gpu::compileProgram({.vertex = "media/block_impostors.vert", .fragment = "media/block_impostors.frag"});
+    program_ = gpu::compileProgram({.vertex = "media/blocks/block_impostors.vert", .fragment = "media/blocks/block_impostors.frag"});
 }
 
 void BlockImpostorRenderer::render(const BlockViewPlan& plan, std::size_t tileSet, const ImpostorTargets& targets,
@@ -48,7 +48,7 @@ void BlockImpostorRenderer::render(const BlockViewPlan& plan, std::size_t tileSe
     particles.bindParticles();
     blocks.bind(tileSet);
     const glm::mat4 projection = plan.view.viewProjection * glm::inverse(plan.view.view);
-    // Views are symmetric: their half extent is the projection's scale (media/view_rays.glsl).
+    // Views are symmetric: their half extent is the projection's scale (media/common/view_rays.glsl).
     const glm::vec2 halfExtent(1.0f / projection[0][0], 1.0f / projection[1][1]);
     const glm::vec4 params(plan.view.perspective ? 1.0f : 0.0f, plan.view.nearDepth, 0.0f, 0.0f);
     const glm::vec2 atlas(plan.atlasSize);

@@ -7,7 +7,7 @@ namespace nimbus::media {
 
 BlockLampSlicePass::BlockLampSlicePass() {
     program_ = gpu::compileProgram(
-        {.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag", .defines = {"SLICE_PARTICLE_LIST"}});
+        {.vertex = "media/slices/light_slices.vert", .fragment = "media/slices/light_slices.frag", .defines = {"SLICE_PARTICLE_LIST"}});
 }
 
 gpu::ResourceHandle BlockLampSlicePass::add(gpu::FrameGraph& graph, gpu::ResourceHandle slices, const std::vector<SliceView>& views,

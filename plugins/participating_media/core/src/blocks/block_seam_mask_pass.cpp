@@ -1,4 +1,4 @@
-// Blocks mode: the seam mask (shaders/media/block_seam.glsl) — where the opaque surface lies among
+// Blocks mode: the seam mask (shaders/media/blocks/block_seam.glsl) — where the opaque surface lies among
 // the particles of a block a mesh comes near, one texel per kSeamMaskCell² media texels.
 #include "blocks/block_seam_mask_pass.h"
 
@@ -22,7 +22,7 @@ inline constexpr GLint kCellLocation = 5;          // block_seam_mask.frag
 int seamMaskCell(glm::ivec2 size) { return std::max(4, (std::min(size.x, size.y) + 47) / 48); }
 
 BlockSeamMaskPass::BlockSeamMaskPass() {
-    program_ = gpu::compileProgram({.vertex = "media/block_composite.vert", .fragment = "media/block_seam_mask.frag"});
+    program_ = gpu::compileProgram({.vertex = "media/blocks/block_composite.vert", .fragment = "media/blocks/block_seam_mask.frag"});
 }
 
 gpu::ResourceHandle BlockSeamMaskPass::add(gpu::FrameGraph& graph, GraphFrame& context, std::vector<BlockRankRun> runs,

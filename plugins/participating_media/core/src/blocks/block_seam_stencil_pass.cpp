@@ -1,4 +1,4 @@
-// Blocks mode: the texels the seam weight reaches (shaders/media/block_seam_stencil.frag), as
+// Blocks mode: the texels the seam weight reaches (shaders/media/blocks/block_seam_stencil.frag), as
 // stencil 1 at the media target's size, so the composite's two draws of a seam run skip the rest
 // before shading rather than reading the mask and discarding (docs/design-notes.md).
 #include "blocks/block_seam_stencil_pass.h"
@@ -13,7 +13,7 @@ inline constexpr GLint kCellLocation = 5;  // block_seam_stencil.frag
 }  // namespace
 
 BlockSeamStencilPass::BlockSeamStencilPass() {
-    program_ = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/block_seam_stencil.frag"});
+    program_ = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/blocks/block_seam_stencil.frag"});
 }
 
 gpu::ResourceHandle BlockSeamStencilPass::add(gpu::FrameGraph& graph, gpu::ResourceHandle mask, const MediaTarget& target, int cell) {

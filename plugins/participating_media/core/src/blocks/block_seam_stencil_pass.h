@@ -1,5 +1,5 @@
 #pragma once
-// The `block_seam_stencil` pass (shaders/media/block_seam_stencil.frag): the seam mask as stencil 1
+// The `block_seam_stencil` pass (shaders/media/blocks/block_seam_stencil.frag): the seam mask as stencil 1
 // at the media target's size, where the composite shades a seam run exactly.
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"

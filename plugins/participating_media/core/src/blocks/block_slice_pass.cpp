@@ -9,7 +9,7 @@
 namespace nimbus::media {
 
 BlockSlicePass::BlockSlicePass() {
-    program_ = gpu::compileProgram({.vertex = "media/block_slices.vert", .fragment = "media/block_slices.frag"});
+    program_ = gpu::compileProgram({.vertex = "media/blocks/block_slices.vert", .fragment = "media/blocks/block_slices.frag"});
 }
 
 gpu::ResourceHandle BlockSlicePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views,

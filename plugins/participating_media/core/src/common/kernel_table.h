@@ -1,7 +1,7 @@
 #pragma once
 // Seed 004's pre-integrated kernel segments: the optical depth of one particle of unit radius and
 // unit peak extinction along a ray at impact parameter β (radii), from where the ray enters the
-// sphere up to μ radii past its closest point. The fast splats (shaders/media/kernel_table.glsl)
+// sphere up to μ radii past its closest point. The fast splats (shaders/media/common/kernel_table.glsl)
 // read it bilinearly, so a fragment's opacity costs one fetch instead of two erf evaluations.
 #include <vector>
 

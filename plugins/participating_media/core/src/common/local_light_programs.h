@@ -1,6 +1,6 @@
 #pragma once
 // Two builds of one media shader: with MEDIA_LOCAL_LIGHTS (point and spot lights integrated along
-// each composited segment, shaders/media/local_light_segment.glsl) and without, for frames lit by
+// each composited segment, shaders/media/common/local_light_segment.glsl) and without, for frames lit by
 // directional lights only. llvmpipe runs both sides of a branch under masks, so the lamp code costs
 // a sunlit frame even where no lamp exists (docs/design-notes.md).
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The GPU copy of a ParticleSet: one std430 instance buffer (shaders/media/particle_data.glsl)
+// The GPU copy of a ParticleSet: one std430 instance buffer (shaders/media/common/particle_data.glsl)
 // with positions relative to the frame origin, and a back-to-front draw order for the camera.
 #include <vector>
 
@@ -20,7 +20,7 @@ struct alignas(16) GpuParticle {
 };
 
 // How far in front of its centre, along a ray through it, a particle's seen light lies: where its
-// own optical depth from the ray's entry reaches the e^−v-weighted mean v̄ (shaders/media/optics.glsl
+// own optical depth from the ray's entry reaches the e^−v-weighted mean v̄ (shaders/media/common/optics.glsl
 // shadingDepthFraction), for a ray through the centre of a particle of radius R and peak
 // extinction σ. 0 for a thin particle (v̄ = τ/2: the centre), towards R for a dense one (its front).
 // Sorting by centres put a dense particle whose front lies far in front of another's behind it

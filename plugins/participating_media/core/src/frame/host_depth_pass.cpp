@@ -10,7 +10,7 @@ inline constexpr GLint kPlanesLocation = 0;    // host_depth.frag uPlanes
 inline constexpr GLint kReversedLocation = 1;  // host_depth.frag uReversed
 }  // namespace
 
-HostDepthPass::HostDepthPass() { program_ = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/host_depth.frag"}); }
+HostDepthPass::HostDepthPass() { program_ = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/frame/host_depth.frag"}); }
 
 gpu::ResourceHandle HostDepthPass::add(gpu::FrameGraph& graph, gpu::ResourceHandle hostDepth, const gpu::View& camera) {
     struct Data {

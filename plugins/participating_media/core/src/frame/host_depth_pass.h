@@ -1,5 +1,5 @@
 #pragma once
-// The `media_host_depth` pass (shaders/media/host_depth.frag): a standard-Z host depth re-encoded
+// The `media_host_depth` pass (shaders/media/frame/host_depth.frag): a standard-Z host depth re-encoded
 // as reversed Z for the plugin's camera, into an R32F texture the media passes read.
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"

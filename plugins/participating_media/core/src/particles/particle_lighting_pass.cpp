@@ -1,5 +1,5 @@
 // Per-particle lighting (fast and balanced tiers): one compute invocation per particle, in draw
-// order, evaluates its source at nine rays through its billboard (shaders/media/particle_lighting.comp)
+// order, evaluates its source at nine rays through its billboard (shaders/media/particles/particle_lighting.comp)
 // into a buffer the splats read per vertex. Fragments then pay for opacity only.
 #include <algorithm>
 
@@ -27,7 +27,7 @@ const gpu::Program& ParticleLightingPass::program(const std::vector<Light>& ligh
 }
 
 gpu::ProgramDesc particleLightingDesc(bool exact, bool constant) {
-    gpu::ProgramDesc desc{.compute = "media/particle_lighting.comp"};
+    gpu::ProgramDesc desc{.compute = "media/particles/particle_lighting.comp"};
     if (exact) desc.defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"};
     if (constant) desc.defines.push_back("SPLAT_CONSTANT");
     return desc;

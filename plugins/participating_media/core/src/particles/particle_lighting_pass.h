@@ -1,5 +1,5 @@
 #pragma once
-// The `particle_lighting` pass: per-particle lighting of the fast tiers (shaders/media/particle_lighting.comp).
+// The `particle_lighting` pass: per-particle lighting of the fast tiers (shaders/media/particles/particle_lighting.comp).
 #include <array>
 #include <memory>
 #include <vector>
@@ -13,7 +13,7 @@
 
 namespace nimbus::media {
 
-inline constexpr int kMaxFragmentLamps = 2;  // shaders/media/particle_light_layout.glsl MAX_FRAGMENT_LAMPS
+inline constexpr int kMaxFragmentLamps = 2;  // shaders/media/common/particle_light_layout.glsl MAX_FRAGMENT_LAMPS
 
 // The lights the fast splats evaluate per fragment (−1: none): the first directional light's phase
 // function (g = 0.99 peaks within a few pixels), and point and spot lights' 1/d² (near a lamp it

@@ -13,7 +13,7 @@ namespace nimbus::media {
 ParticlePass::ParticlePass() : layerLight_(particlesDesc(true)) {}
 
 gpu::ProgramDesc particlesDesc(bool layerLight) {
-    gpu::ProgramDesc desc{.vertex = "media/particles.vert", .fragment = "media/particles.frag"};
+    gpu::ProgramDesc desc{.vertex = "media/particles/particles.vert", .fragment = "media/particles/particles.frag"};
     if (layerLight) desc.defines.push_back("MEDIA_LAYER_LIGHT");
     return desc;
 }

@@ -24,7 +24,7 @@ const gpu::Program& ParticleSplatPass::program(bool eyeInside, bool lamps, bool 
 }
 
 gpu::ProgramDesc particleSplatDesc(bool eyeInside, bool lamps, bool constant) {
-    gpu::ProgramDesc desc{.vertex = "media/particle_splats.vert", .fragment = "media/particle_splats.frag"};
+    gpu::ProgramDesc desc{.vertex = "media/particles/particle_splats.vert", .fragment = "media/particles/particle_splats.frag"};
     if (eyeInside) desc.defines.push_back("MEDIA_EYE_INSIDE");
     if (lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
     if (constant) desc.defines.push_back("SPLAT_CONSTANT");

@@ -8,7 +8,7 @@
 
 namespace nimbus::media {
 
-SplatFloor::SplatFloor() : program_(gpu::compileProgram({.vertex = "media/splat_floor.vert", .fragment = "media/splat_floor.frag"})) {}
+SplatFloor::SplatFloor() : program_(gpu::compileProgram({.vertex = "media/particles/splat_floor.vert", .fragment = "media/particles/splat_floor.frag"})) {}
 
 void SplatFloor::draw(const ParticleGpuBuffer& buffer, GLuint framebuffer, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);

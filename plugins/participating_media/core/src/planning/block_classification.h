@@ -26,11 +26,11 @@ inline constexpr std::uint32_t kMaxOwnShadedBlockParticles = 64;  // block_own_o
 
 // Whether light view v's slices resolve a particle of radius R and peak extinction σ at `centre`
 // (origin-relative): slice planes and texels no farther apart than it is wide and neither holding
-// more than an optical depth of 2 of it (shaders/media/own_optical_depth.glsl slicesResolve).
+// more than an optical depth of 2 of it (shaders/media/common/own_optical_depth.glsl slicesResolve).
 bool sliceViewResolves(const gpu::GpuLightView& v, const glm::dvec3& centre, double radius, double sigma);
 
 // Per block (1/0): whether it is shaded from its own particles (BLOCK_OWN_PARTICLES,
-// shaders/media/block_own_optical_depth.glsl): it has at most kMaxOwnShadedBlockParticles, and a
+// shaders/media/blocks/block_own_optical_depth.glsl): it has at most kMaxOwnShadedBlockParticles, and a
 // light view's slices do not resolve one of them at the block's centre (sliceViewResolves). Such
 // a block is lumps, not the smooth medium its depth profile stands for. `views`: the frame's
 // transmittance views (origin-relative, as packed for the shaders); `origin`: the frame origin.
@@ -44,7 +44,7 @@ std::vector<std::uint8_t> blocksOfUnresolvedParticles(const BlockPartition& part
 // may lie in front of one that passes among the blocks (its rectangle in `cameraPlan` meets the mesh
 // box's on the screen, and it reaches nearer than the box's far side). Such a block is shaded at up
 // to 16 points placed by its own particles, with its overlapping neighbours' attenuation made exact
-// (shaders/media/block_order.glsl, overlappingBlockLists): over its whole rectangle (exact), or
+// (shaders/media/blocks/block_order.glsl, overlappingBlockLists): over its whole rectangle (exact), or
 // only near the texels where a mesh lies among the particles (seam, BlockSeamMaskPass). The default
 // smooth shading is cheaper, and its errors and the compositing order's partly cancel, but not for
 // small dense particles shaded at uniform points, or big overlapping ones (dark from the order). The

@@ -29,7 +29,7 @@ void setDepositUniforms(GLuint program, const SliceView& v) {
 }  // namespace
 
 LightSliceDepositPass::LightSliceDepositPass()
-    : program_(gpu::compileProgram({.vertex = "media/light_slice_deposit.vert", .fragment = "media/light_slice_deposit.frag"})),
+    : program_(gpu::compileProgram({.vertex = "media/slices/light_slice_deposit.vert", .fragment = "media/slices/light_slice_deposit.frag"})),
       kernelTable_(createKernelTable()) {}
 
 bool LightSliceDepositPass::supported() { return epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array"); }

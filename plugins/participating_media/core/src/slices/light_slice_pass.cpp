@@ -13,7 +13,7 @@ namespace nimbus::media {
 
 
 LightSlicePass::LightSlicePass() {
-    program_ = gpu::compileProgram({.vertex = "media/light_slices.vert", .fragment = "media/light_slices.frag"});
+    program_ = gpu::compileProgram({.vertex = "media/slices/light_slices.vert", .fragment = "media/slices/light_slices.frag"});
 }
 
 gpu::ResourceHandle LightSlicePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,

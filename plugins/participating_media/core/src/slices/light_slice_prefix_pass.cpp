@@ -1,5 +1,5 @@
 // Light slices in deposit form, second pass: per view, the running sum of its slabs written as the
-// optical depth up to each slice plane, 4 slices per RGBA32F layer (shaders/media/light_slice_prefix.frag).
+// optical depth up to each slice plane, 4 slices per RGBA32F layer (shaders/media/slices/light_slice_prefix.frag).
 #include <algorithm>
 
 #include "slices/light_slice_prefix_pass.h"
@@ -10,7 +10,7 @@
 namespace nimbus::media {
 
 LightSlicePrefixPass::LightSlicePrefixPass()
-    : program_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/light_slice_prefix.frag"})) {}
+    : program_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_prefix.frag"})) {}
 
 gpu::ResourceHandle LightSlicePrefixPass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
                                                  gpu::ResourceHandle slabs) {

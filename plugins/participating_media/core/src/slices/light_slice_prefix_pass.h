@@ -1,5 +1,5 @@
 #pragma once
-// The `light_slice_prefix` pass (shaders/media/light_slice_prefix.frag).
+// The `light_slice_prefix` pass (shaders/media/slices/light_slice_prefix.frag).
 #include <vector>
 
 #include "nimbus/gpu/frame_graph.h"

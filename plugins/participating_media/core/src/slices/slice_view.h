@@ -24,9 +24,9 @@ void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view, 
 void setAdditiveSliceState(int resolution);
 // Detaches them again, so the next view's attachment count starts clean.
 void unbindSliceLayers(GLuint framebuffer, const SliceView& view);
-// The uniforms both slice programs read for a view (shaders/media/light_slices.vert,
+// The uniforms both slice programs read for a view (shaders/media/slices/light_slices.vert,
 // block_slices.vert): 0 view, 2 params (perspective, depth near/far, slices), 3 half extent
-// (media/view_rays.glsl), 4 slice resolution, 6 light origin.
+// (media/common/view_rays.glsl), 4 slice resolution, 6 light origin.
 void setSliceViewUniforms(GLuint program, const SliceView& view, int resolution);
 // setSliceViewUniforms and the light view's projection (5) that light_slices.vert draws particles with.
 void setParticleSliceUniforms(GLuint program, const SliceView& view, int resolution);

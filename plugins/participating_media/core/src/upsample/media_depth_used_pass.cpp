@@ -1,5 +1,5 @@
 // Offscreen media (seed 002): the media pass runs at ½ or ¼ resolution; this records the view depth
-// each reduced texel used (shaders/media/depth_used.frag), which the compose pass needs to upsample
+// each reduced texel used (shaders/media/upsample/depth_used.frag), which the compose pass needs to upsample
 // the media target with depth awareness (shaders/common/upsample.glsl).
 #include "upsample/media_depth_used_pass.h"
 
@@ -10,7 +10,7 @@
 namespace nimbus::media {
 
 MediaDepthUsedPass::MediaDepthUsedPass()
-    : program_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/depth_used.frag"})) {}
+    : program_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/upsample/depth_used.frag"})) {}
 
 gpu::ResourceHandle MediaDepthUsedPass::add(gpu::FrameGraph& graph, GraphFrame& context, const MediaTarget& target) {
     struct Data {

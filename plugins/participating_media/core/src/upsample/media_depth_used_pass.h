@@ -1,5 +1,5 @@
 #pragma once
-// The `media_depth_used` pass (shaders/media/depth_used.frag).
+// The `media_depth_used` pass (shaders/media/upsample/depth_used.frag).
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"

@@ -94,7 +94,7 @@ std::vector<std::uint8_t> blocksSeenWideFromLamps(const BlockPartition& partitio
 // and by none of those drawn before it. Where two blocks' spheres overlap, a ray may meet part of
 // each in front of the other, and the order is wrong for that part. Where a mesh is seen in the
 // medium, block_composite.frag makes the overlapping neighbours' attenuation exact by their depth
-// profiles (shaders/media/block_order.glsl), for the neighbours listed here (docs/design-notes.md).
+// profiles (shaders/media/blocks/block_order.glsl), for the neighbours listed here (docs/design-notes.md).
 inline constexpr std::size_t kMaxOrderNeighbours = 32;
 
 // Per block, the blocks whose bounding spheres overlap its own, nearest centres first, at most

@@ -25,7 +25,7 @@ namespace nimbus::media {
 // measured baseline for `sandbox bench`, not a feature to tune.
 enum class MediaMode { Particles, Blocks, Billboards };
 
-// How blocks mode shades the blocks where a mesh is seen inside the medium (block_passes.h
+// How blocks mode shades the blocks where a mesh is seen inside the medium (planning/block_classification.h
 // blocksShadedExactly): exactly is at up to 16 points placed by their own particles, with the
 // compositing order of overlapping blocks corrected; smoothly is at two points of each block's
 // depth profile, as everywhere else.

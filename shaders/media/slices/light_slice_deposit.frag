@@ -5,7 +5,7 @@
 // Works in the light's view space, where the light looks down −Z from the origin (perspective) or
 // rays run down −Z from z = 0 (orthographic), so view depth is −z.
 #include "common/math.glsl"
-#include "media/kernel_table.glsl"
+#include "media/common/kernel_table.glsl"
 
 layout(location = 2) uniform vec4 uParams;  // x: perspective
 

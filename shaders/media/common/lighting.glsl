@@ -3,9 +3,9 @@
 // T_l = exp(−τ) from the light slices; V_mesh from the mesh shadow map with the smooth weighting of
 // seed 001 §III (never a hard cut through a billboard). Needs common/frame, lights, light_views,
 // transmittance, media/optics.
-#include "media/mesh_shadow.glsl"
-#include "media/lamp_neighbourhood.glsl"
-#include "media/own_optical_depth.glsl"
+#include "media/common/mesh_shadow.glsl"
+#include "media/common/lamp_neighbourhood.glsl"
+#include "media/common/own_optical_depth.glsl"
 
 // Seed 001 §III: instead of a lit/unlit test per pixel, compare the occluder depth the shadow map
 // stores with the receiver's depth and weight smoothly over the particle's own depth extent: the
@@ -42,7 +42,7 @@ float mediumMeshVisibility(int lightIndex, vec3 p, float softness) {
 }
 
 // After meshVisibilityTap, which the lamp integration uses per node.
-#include "media/local_light_segment.glsl"
+#include "media/common/local_light_segment.glsl"
 
 // Light i scattered towards the camera at p, per unit optical depth and albedo: p(θ) E V T, all
 // taken at p. `visibility` ≥ 0 replaces the mesh visibility at p (see segmentVisibility),

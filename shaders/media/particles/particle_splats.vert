@@ -5,12 +5,12 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
-#include "media/particle_data.glsl"
-#include "media/billboard.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/common/billboard.glsl"
 
 layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) readonly buffer ParticleLight { vec4 particleLight[]; };
-#include "media/particle_light_layout.glsl"
+#include "media/common/particle_light_layout.glsl"
 
 flat out vec4 vCentreRadius;  // origin-relative centre, radius
 flat out float vSigma;

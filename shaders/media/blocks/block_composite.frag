@@ -9,21 +9,21 @@
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
-#include "media/slices.glsl"
-#include "media/optics.glsl"
-#include "media/particle_data.glsl"
-#include "media/lighting.glsl"
-#include "media/block_data.glsl"
-#include "media/block_lighting.glsl"
-#include "media/block_order.glsl"
-#include "media/block_seam.glsl"
+#include "media/common/slices.glsl"
+#include "media/common/optics.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/common/lighting.glsl"
+#include "media/blocks/block_data.glsl"
+#include "media/blocks/block_lighting.glsl"
+#include "media/blocks/block_order.glsl"
+#include "media/blocks/block_seam.glsl"
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(binding = MEDIA_IMPOSTOR_DEPTHS_UNIT) uniform sampler2D uImpostorDepths;
 layout(binding = MEDIA_IMPOSTOR_SUMS1_UNIT) uniform sampler2D uImpostorSums1;
 layout(binding = MEDIA_IMPOSTOR_SUMS2_UNIT) uniform sampler2D uImpostorSums2;
 layout(binding = MEDIA_IMPOSTOR_MOMENTS_UNIT) uniform sampler2D uImpostorMoments;  // τ·mean, τ·(variance + mean²) of the depth along the ray
-layout(binding = MEDIA_SEAM_MASK_UNIT) uniform sampler2D uSeamMask;         // media/block_seam.glsl; read where uSeamPart is 2
+layout(binding = MEDIA_SEAM_MASK_UNIT) uniform sampler2D uSeamMask;         // media/blocks/block_seam.glsl; read where uSeamPart is 2
 
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
 // Which texels this draw shades (block_composite_pass.cpp draws the blocks of a seam twice, once

@@ -8,14 +8,14 @@
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
-#include "media/optics.glsl"
-#include "media/kernel_table.glsl"
-#include "media/particle_light_layout.glsl"
+#include "media/common/optics.glsl"
+#include "media/common/kernel_table.glsl"
+#include "media/common/particle_light_layout.glsl"
 #ifdef MEDIA_FRAGMENT_LAMPS
 #include "common/light_views.glsl"
-#include "media/slices.glsl"
-#include "media/spot_cone.glsl"
-#include "media/mesh_shadow.glsl"
+#include "media/common/slices.glsl"
+#include "media/common/spot_cone.glsl"
+#include "media/common/mesh_shadow.glsl"
 #endif
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;

@@ -8,7 +8,7 @@
 // closest approach, b its distance): ∫ f(u)/d² du = (1/b) ∫ f dφ, which Gauss–Legendre handles.
 // Needs lights, transmittance, media/optics, media/lamp_neighbourhood and meshVisibilityTap (lighting.glsl).
 
-#include "media/spot_cone.glsl"
+#include "media/common/spot_cone.glsl"
 
 // The nodes of ∫ f(t)/d(t)² dt over [a, b] = lit for light i, f carrying a kernel centred at ray
 // parameter `kernelAt` with radius `radius` (deviation radius/3). Gauss–Legendre in φ with

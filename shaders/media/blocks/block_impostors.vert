@@ -3,8 +3,8 @@
 // block's tile of the atlas, where the tile stands for the block's rectangle in the view (the
 // camera or a light view). Clip distances keep each quad inside its tile.
 #include "common/math.glsl"
-#include "media/particle_data.glsl"
-#include "media/block_data.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/blocks/block_data.glsl"
 
 layout(location = 0) uniform mat4 uView;
 layout(location = 1) uniform mat4 uProjection;

@@ -4,10 +4,10 @@
 // where the first particle starts), g = −back, b = edge distance, a = optical depth. Targets 1 and 2 add the
 // optical-depth-weighted albedo, emission and g (camera impostors only), target 3 the depth moments.
 #include "common/math.glsl"
-#include "media/optics.glsl"
-#include "media/particle_data.glsl"
-#include "media/block_data.glsl"
-#include "media/view_rays.glsl"
+#include "media/common/optics.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/blocks/block_data.glsl"
+#include "media/common/view_rays.glsl"
 
 layout(location = 0) uniform mat4 uView;
 layout(location = 2) uniform vec4 uParams;  // x: perspective

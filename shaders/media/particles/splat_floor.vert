@@ -2,8 +2,8 @@
 // The splat floor (media/splat_floor.cpp): every particle's billboard, as the splats draw it.
 #include "common/math.glsl"
 #include "common/frame.glsl"
-#include "media/particle_data.glsl"
-#include "media/billboard.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/common/billboard.glsl"
 
 const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
 

@@ -20,12 +20,12 @@ layout(local_size_x = 64) in;
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
-#include "media/slices.glsl"
-#include "media/optics.glsl"
-#include "media/particle_data.glsl"
-#include "media/particle_light_layout.glsl"
-#include "media/lighting.glsl"
-#include "media/billboard.glsl"
+#include "media/common/slices.glsl"
+#include "media/common/optics.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/common/particle_light_layout.glsl"
+#include "media/common/lighting.glsl"
+#include "media/common/billboard.glsl"
 
 layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) writeonly buffer ParticleLight { vec4 particleLight[]; };  // per rank: particle_light_layout.glsl

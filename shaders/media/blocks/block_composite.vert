@@ -2,7 +2,7 @@
 // Blocks mode (media/block_composite_pass.cpp): one quad per block over its screen rectangle,
 // blocks back to front. The seam mask (block_seam_mask_pass.cpp) draws the same quads, widened.
 #include "media/bindings.glsl"
-#include "media/block_data.glsl"
+#include "media/blocks/block_data.glsl"
 
 layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 

@@ -11,7 +11,7 @@
 // rays of the slice texels. Needs media/own_optical_depth, block_data and block_light_profile.
 
 // The blocks composited with this code (BLOCK_OWN_PARTICLES) are chosen on the CPU
-// (block_passes.h blocksOfUnresolvedParticles): at most 64 particles each, which this walks for
+// (planning/block_classification.h blocksOfUnresolvedParticles): at most 64 particles each, which this walks for
 // four texel rays at each shading point. llvmpipe would pay for it in every pixel of a draw.
 #ifdef BLOCK_OWN_PARTICLES
 const bool kOwnParticles = true;

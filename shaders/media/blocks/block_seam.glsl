@@ -6,7 +6,7 @@
 // The share of the media texel at `texel` (window coordinates of the media target) that takes the
 // exact shading: 1 within the mask's cells and half a cell around them, falling to 0 over the next
 // cell, so the smooth shading around the seam meets the exact one without a step. Cells grow with
-// the image (block_passes.h seamMaskCell), so the ramp is as wide a share of the image at any size.
+// the image (blocks/block_seam_mask_pass.h seamMaskCell), so the ramp is as wide a share of the image at any size.
 float seamWeight(sampler2D mask, vec2 texel, int cell) {
     ivec2 last = textureSize(mask, 0) - 1;
     vec2 p = texel / float(cell) - 0.5;  // cell i's centre is at (i + 0.5)·cell

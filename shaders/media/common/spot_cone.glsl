@@ -1,5 +1,5 @@
 // A spot light's cone along a ray (local_light_segment.glsl, particle_splats.frag). Needs
-// common/lights.glsl and media/optics.glsl (Chord).
+// common/lights.glsl and media/common/optics.glsl (Chord).
 // The part [a, b] of [lo, hi] (u from the chord's closest point) inside light i's cone: all of it
 // for a point light, b < a when the ray misses the cone. The forward nappe is convex, so the inside
 // is one interval, bounded by roots of (w·D)² = cos²θ_o |w|² with w = x − apex.

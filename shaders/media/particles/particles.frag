@@ -8,10 +8,10 @@
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
-#include "media/slices.glsl"
-#include "media/optics.glsl"
-#include "media/particle_data.glsl"
-#include "media/lighting.glsl"
+#include "media/common/slices.glsl"
+#include "media/common/optics.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/common/lighting.glsl"
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(location = 0) uniform int uSoftParticles;

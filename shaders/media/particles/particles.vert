@@ -4,7 +4,7 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
-#include "media/particle_data.glsl"
+#include "media/common/particle_data.glsl"
 
 layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 

@@ -3,7 +3,7 @@
 // that covers its sphere as the light sees it. The fragment shader does the exact integral.
 #include "media/bindings.glsl"
 #include "common/math.glsl"
-#include "media/particle_data.glsl"
+#include "media/common/particle_data.glsl"
 
 layout(location = 0) uniform mat4 uView;            // origin-relative world → light view
 layout(location = 2) uniform vec4 uParams;          // x: perspective, y: depth near, z: depth far, w: slices

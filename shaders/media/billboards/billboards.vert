@@ -6,9 +6,9 @@
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
-#include "media/optics.glsl"
-#include "media/particle_data.glsl"
-#include "media/billboard.glsl"
+#include "media/common/optics.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/common/billboard.glsl"
 
 layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 

@@ -5,8 +5,8 @@
 // between two slice planes it reaches; its quad, facing the light and covering the sphere as the
 // light sees it, goes to that slab's layer. light_slice_prefix.frag then sums the slabs.
 #include "common/math.glsl"
-#include "media/particle_data.glsl"
-#include "media/light_billboard.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/common/light_billboard.glsl"
 
 layout(std430, binding = MEDIA_SLICE_PIECES_BINDING) readonly buffer SlicePieces { uint slicePieces[]; };  // particle << 5 | slab
 

@@ -1,8 +1,8 @@
 // Light scattered by a block's visible segment of a view ray (blocks mode's counterpart of
 // lighting.glsl segmentSource): the same lights, with a block's depth profile (BlockProfile) in
 // place of a particle's kernel. Needs media/lighting and media/block_data.
-#include "media/block_light_profile.glsl"
-#include "media/block_own_optical_depth.glsl"
+#include "media/blocks/block_light_profile.glsl"
+#include "media/blocks/block_own_optical_depth.glsl"
 
 // block_order.glsl (the BLOCK_EXACT_SHADING build): the log of the factor that makes the overlapping
 // blocks' attenuation of light scattered at ray distance t exact; 0 in the other builds.

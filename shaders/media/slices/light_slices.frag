@@ -3,9 +3,9 @@
 // from the light up to each slice plane, in closed form, added into 4 slices per RGBA32F target.
 // Additive blending: no sort, and the order particles arrive in cannot change the result.
 #include "common/math.glsl"
-#include "media/optics.glsl"
-#include "media/particle_data.glsl"
-#include "media/view_rays.glsl"
+#include "media/common/optics.glsl"
+#include "media/common/particle_data.glsl"
+#include "media/common/view_rays.glsl"
 
 layout(location = 0) uniform mat4 uView;
 layout(location = 2) uniform vec4 uParams;              // x: perspective, y: depth near, z: depth far, w: slices

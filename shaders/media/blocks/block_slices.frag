@@ -5,10 +5,10 @@
 // end (block_light_profile.glsl). Additive, like the particle slices.
 #include "media/bindings.glsl"
 #include "common/math.glsl"
-#include "media/optics.glsl"
-#include "media/block_data.glsl"
-#include "media/block_light_profile.glsl"
-#include "media/view_rays.glsl"
+#include "media/common/optics.glsl"
+#include "media/blocks/block_data.glsl"
+#include "media/blocks/block_light_profile.glsl"
+#include "media/common/view_rays.glsl"
 
 layout(location = 0) uniform mat4 uView;
 layout(location = 2) uniform vec4 uParams;  // x: perspective, y: slice near, z: slice far, w: slices

@@ -5,7 +5,7 @@
 // slices do not resolve a particle, what they hold of it at p is recomputed as light_slices.frag
 // wrote it, taken out, and its exact optical depth from the light to p put in. Other particles'
 // spread stays: a slice map cannot tell them apart. Blocks do the same with a block's particles
-// (block_own_optical_depth.glsl). Needs media/host/light_transmittance.glsl and media/optics.glsl.
+// (block_own_optical_depth.glsl). Needs media/host/light_transmittance.glsl and media/common/optics.glsl.
 
 // The particle's optical depth along a light-view ray from where the ray starts (the light, for a
 // perspective view) up to ray parameter t, integrated as light_slices.frag does.

@@ -5,7 +5,7 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
-#include "media/kernel_table.glsl"
+#include "media/common/kernel_table.glsl"
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(location = 1) uniform vec2 uFullResScale;

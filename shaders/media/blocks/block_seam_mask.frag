@@ -1,12 +1,12 @@
 #version 450 core
-// The seam mask (media/block_seam.glsl): drawn over the rectangles of the blocks a mesh comes near
+// The seam mask (media/blocks/block_seam.glsl): drawn over the rectangles of the blocks a mesh comes near
 // (block_seam_mask_pass.cpp), one fragment per mask cell. A cell is set where, at one of its media
 // texels, the opaque surface lies within the block's [front − reach, back + reach]: there
 // block_composite.frag cuts the block, and the smooth shading's error shows along the cut.
 #include "media/bindings.glsl"
 #include "common/frame.glsl"
-#include "media/block_data.glsl"
-#include "media/block_seam.glsl"
+#include "media/blocks/block_data.glsl"
+#include "media/blocks/block_seam.glsl"
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(binding = MEDIA_IMPOSTOR_DEPTHS_UNIT) uniform sampler2D uImpostorDepths;
