@@ -51,6 +51,20 @@ GpuLightView packLightView(const LightView& v, int firstLayer, float sliceCount,
     return g;
 }
 
+PackedLights packLights(const std::vector<PunctualLight>& lights, const glm::dvec3& origin,
+                        const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize) {
+    PackedLights out;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const std::size_t views = i < shadowViews.size() ? shadowViews[i].size() : 0;
+        const int first = views == 0 ? -1 : static_cast<int>(out.shadowViews.size());
+        out.lights.push_back(packLight(lights[i], origin, first, static_cast<int>(views)));
+        for (std::size_t v = 0; v < views; ++v)
+            out.shadowViews.push_back(packLightView(shadowViews[i][v], static_cast<int>(out.shadowViews.size()), 0.0f,
+                                                    static_cast<float>(shadowMapSize)));
+    }
+    return out;
+}
+
 void uploadBlock(GLuint buffer, std::size_t capacity, const void* items, std::size_t count, std::size_t itemSize, const char* what) {
     if (count > capacity)
         throw InputError(std::to_string(count) + " " + what + " in one frame; the real-time renderer draws at most " + std::to_string(capacity));

@@ -40,9 +40,18 @@ bool isDepthFormat(GLenum format) {
            format == GL_DEPTH32F_STENCIL8 || format == GL_DEPTH24_STENCIL8;
 }
 
-Texture::Texture(const TextureDesc& desc) : desc_(desc) {
-    desc_.depth = std::max(desc_.depth, 1);
-    desc_.levels = std::max(desc_.levels, 1);
+namespace {
+
+// Zero depth and levels mean 1.
+TextureDesc withDefaults(TextureDesc desc) {
+    desc.depth = std::max(desc.depth, 1);
+    desc.levels = std::max(desc.levels, 1);
+    return desc;
+}
+
+}  // namespace
+
+Texture::Texture(const TextureDesc& desc) : desc_(withDefaults(desc)) {
     GLuint name = 0;
     glCreateTextures(desc_.target, 1, &name);
     handle_ = GlObject<TextureTraits>(name);
@@ -67,9 +76,7 @@ Texture::Texture(const TextureDesc& desc) : desc_(desc) {
 Texture Texture::borrow(GLuint name, const TextureDesc& desc) {
     Texture t;
     t.borrowed_ = name;
-    t.desc_ = desc;
-    t.desc_.depth = std::max(t.desc_.depth, 1);
-    t.desc_.levels = std::max(t.desc_.levels, 1);
+    t.desc_ = withDefaults(desc);
     return t;
 }
 

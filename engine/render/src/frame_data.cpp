@@ -13,17 +13,9 @@ void FrameData::update(const View& view, const assets::Environment& environment,
     frame_ = gpu::packFrame(view, environment.ambient, environment.background, static_cast<int>(lights.size()), shadowMapSize, pcfRadius);
     glNamedBufferSubData(frameBuffer_.id(), 0, sizeof(GpuFrame), &frame_);
 
-    std::vector<GpuLight> gpuLights;
-    std::vector<GpuLightView> gpuShadowViews;
-    for (std::size_t i = 0; i < lights.size(); ++i) {
-        const auto& views = i < shadowViews.size() ? shadowViews[i] : std::vector<LightView>{};
-        const int first = views.empty() ? -1 : static_cast<int>(gpuShadowViews.size());
-        gpuLights.push_back(gpu::packLight(punctualLight(lights[i]), view.origin, first, static_cast<int>(views.size())));
-        for (const auto& v : views)
-            gpuShadowViews.push_back(packLightView(v, static_cast<int>(gpuShadowViews.size()), 0.0f, static_cast<float>(shadowMapSize)));
-    }
-    gpu::uploadBlock(lights_, kMaxLights, gpuLights, "lights");
-    gpu::uploadBlock(shadowViews_, kMaxLightViews, gpuShadowViews, "shadow map views");
+    const gpu::PackedLights packed = gpu::packLights(punctualLights(lights), view.origin, shadowViews, shadowMapSize);
+    gpu::uploadBlock(lights_, kMaxLights, packed.lights, "lights");
+    gpu::uploadBlock(shadowViews_, kMaxLightViews, packed.shadowViews, "shadow map views");
 }
 
 void FrameData::bind() const {

@@ -5,7 +5,7 @@
 
 namespace nimbus::media {
 
-HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows) {
+HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows, bool occluders) {
     HostFrame frame;
     frame.camera = context.view;
     frame.lights = render::punctualLights(context.input.lights);
@@ -16,7 +16,7 @@ HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows
     shadows.pcfRadius = context.settings.pcfRadius;
     shadows.views = context.shadowViews;
     frame.shadows = &shadows;
-    if (context.input.gpuScene != nullptr) {
+    if (occluders && context.input.gpuScene != nullptr) {
         for (const render::MeshInstance& instance : context.input.instances) {
             const auto& [lo, hi] = context.input.gpuScene->localBounds(instance.mesh);
             if (lo.x > hi.x) continue;  // a mesh without triangles
@@ -28,7 +28,7 @@ HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows
 
 void MediaRenderExtension::beforeOpaque(render::FrameGraph& graph, render::FrameContext& context) {
     frame_ = GraphFrame{};
-    frame_.host = hostFrame(context, shadows_);
+    frame_.host = hostFrame(context, shadows_, renderer_.readsOccluders());
     frame_.shadowMap = context.shadowMap;
     renderer_.addLightSlices(graph, frame_);
     if (!frame_.slices.valid()) return;

@@ -69,17 +69,9 @@ void gather(ecs::World& world) {
     state.renderer->prepare(state.particles, world.singleton<MediaSettings>().settings);
 }
 
-// The contract's frame from mini_host's: its camera, lights, environment, shadow map and mesh boxes.
-media::HostFrame hostFrame(const FrameInput& frame, const MeshRenderer& meshes, media::HostShadowMaps& shadows, const Scene& scene) {
-    media::HostFrame host;
-    host.camera = frame.view;
-    host.lights = frame.lights;
-    host.ambient = frame.environment.ambient;
-    host.background = frame.environment.background;
-    shadows = {meshes.shadowMap(), kShadowMapSize, kPcfRadius, frame.shadowViews};
-    host.shadows = &shadows;
-    host.sceneDepth = meshes.sceneDepth();
-    host.depthConvention = frame.standardDepth ? media::DepthConvention::Standard : media::DepthConvention::ReversedZ;
+// World boxes of the instances' meshes, which blocks mode shades exactly where they reach.
+std::vector<media::OccluderBox> occluderBoxes(const FrameInput& frame, const Scene& scene) {
+    std::vector<media::OccluderBox> boxes;
     for (const MeshInstance& instance : frame.instances) {
         const Mesh& mesh = scene.meshes.at(static_cast<std::size_t>(instance.mesh));
         glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
@@ -87,9 +79,25 @@ media::HostFrame hostFrame(const FrameInput& frame, const MeshRenderer& meshes, 
             lo = glm::min(lo, glm::dvec3(p.boundsMin));
             hi = glm::max(hi, glm::dvec3(p.boundsMax));
         }
-        if (lo.x <= hi.x) host.occluders.push_back(media::occluderBox(instance.world, lo, hi));
+        if (lo.x <= hi.x) boxes.push_back(media::occluderBox(instance.world, lo, hi));
     }
-    return host;
+    return boxes;
+}
+
+// The contract's frame from mini_host's: its camera, lights, environment and shadow map, and the
+// mesh boxes when the renderer reads them. Made once per frame, before the opaque pass; the scene
+// depth joins it after that pass (its target exists from the first opaque pass on).
+void makeHostFrame(MediaState& state, const FrameInput& frame, const MeshRenderer& meshes, const Scene& scene) {
+    media::HostFrame& host = state.frame;
+    host = {};
+    host.camera = frame.view;
+    host.lights = frame.lights;
+    host.ambient = frame.environment.ambient;
+    host.background = frame.environment.background;
+    state.shadows = {meshes.shadowMap(), kShadowMapSize, kPcfRadius, frame.shadowViews};
+    host.shadows = &state.shadows;
+    host.depthConvention = frame.standardDepth ? media::DepthConvention::Standard : media::DepthConvention::ReversedZ;
+    if (state.renderer->readsOccluders()) host.occluders = occluderBoxes(frame, scene);
 }
 
 void installHooks(ecs::World& world) {
@@ -101,16 +109,16 @@ void installHooks(ecs::World& world) {
     hooks.beforeOpaque = [](ecs::World& w, const FrameInput& frame, const MeshRenderer& meshes) {
         MediaState& state = w.singleton<MediaState>();
         if (state.particles.empty()) return false;
-        media::HostShadowMaps shadows;
-        const media::LightSlices slices = state.renderer->renderLightSlices(hostFrame(frame, meshes, shadows, *w.singleton<SceneAsset>().scene));
+        makeHostFrame(state, frame, meshes, *w.singleton<SceneAsset>().scene);
+        const media::LightSlices slices = state.renderer->renderLightSlices(state.frame);
         slices.bind();
         return slices.texture != 0;
     };
-    hooks.afterOpaque = [](ecs::World& w, const FrameInput& frame, const MeshRenderer& meshes) {
+    hooks.afterOpaque = [](ecs::World& w, const FrameInput&, const MeshRenderer& meshes) {
         MediaState& state = w.singleton<MediaState>();
         if (state.particles.empty()) return MediaLayerRef{};
-        media::HostShadowMaps shadows;
-        const media::MediaLayer layer = state.renderer->renderMedia(hostFrame(frame, meshes, shadows, *w.singleton<SceneAsset>().scene));
+        state.frame.sceneDepth = meshes.sceneDepth();
+        const media::MediaLayer layer = state.renderer->renderMedia(state.frame);
         return MediaLayerRef{layer.color, layer.size.x, layer.size.y, layer.depthUsed, layer.edgeThreshold};
     };
     world.set(std::move(hooks));

@@ -37,6 +37,8 @@ struct MediaState {
     nimbus::media::MediaScene scene;
     nimbus::media::ParticleSet particles;  // this frame's
     std::unique_ptr<nimbus::media::MediaRenderer> renderer;  // created by the first frame with particles
+    nimbus::media::HostFrame frame;             // this frame's, for both of the renderer's calls
+    nimbus::media::HostShadowMaps shadows;      // what frame.shadows points to
 };
 
 struct MediaModule {

@@ -63,6 +63,15 @@ GpuFrame packFrame(const View& view, const glm::vec3& ambient, const glm::vec3& 
 GpuLight packLight(const PunctualLight& light, const glm::dvec3& origin, int firstShadowView, int shadowViews);
 GpuLightView packLightView(const LightView& view, int firstLayer, float sliceCount, float texels);
 
+// Every light with its shadow views (per light, in layer order; a light without views, or past the
+// end of `shadowViews`, has no shadow map), as the Lights and ShadowViews blocks hold them.
+struct PackedLights {
+    std::vector<GpuLight> lights;
+    std::vector<GpuLightView> shadowViews;
+};
+PackedLights packLights(const std::vector<PunctualLight>& lights, const glm::dvec3& origin,
+                        const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize);
+
 // Writes `count` items of `itemSize` bytes at the start of `buffer`; throws InputError naming
 // `what` when there are more than the block holds (`capacity`).
 void uploadBlock(GLuint buffer, std::size_t capacity, const void* items, std::size_t count, std::size_t itemSize, const char* what);

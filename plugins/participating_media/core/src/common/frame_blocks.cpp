@@ -1,6 +1,7 @@
 #include "common/frame_blocks.h"
 
 #include <cstddef>
+#include <utility>
 
 #include "nimbus/base/error.h"
 
@@ -20,16 +21,10 @@ void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightVie
     const HostShadowMaps* shadows = host.shadows;
     frame_ = gpu::packFrame(host.camera, host.ambient, host.background, static_cast<int>(host.lights.size()),
                             shadows ? shadows->size : 0, shadows ? shadows->pcfRadius : 0);
-    lights_.clear();
-    shadowViews_.clear();
-    for (std::size_t i = 0; i < host.lights.size(); ++i) {
-        const bool shadowed = shadows && i < shadows->views.size() && !shadows->views[i].empty();
-        const int count = shadowed ? static_cast<int>(shadows->views[i].size()) : 0;
-        lights_.push_back(gpu::packLight(host.lights[i], host.camera.origin, shadowed ? static_cast<int>(shadowViews_.size()) : -1, count));
-        for (int v = 0; v < count; ++v)
-            shadowViews_.push_back(gpu::packLightView(shadows->views[i][static_cast<std::size_t>(v)], static_cast<int>(shadowViews_.size()),
-                                                      0.0f, static_cast<float>(shadows->size)));
-    }
+    static const std::vector<std::vector<gpu::LightView>> kNoShadows;
+    gpu::PackedLights packed = gpu::packLights(host.lights, host.camera.origin, shadows ? shadows->views : kNoShadows, shadows ? shadows->size : 0);
+    lights_ = std::move(packed.lights);
+    shadowViews_ = std::move(packed.shadowViews);
     perLight_.assign(host.lights.size(), glm::ivec4(-1, 0, 0, 0));
     for (std::size_t i = 0; i < perLight.size() && i < perLight_.size(); ++i)
         if (perLight[i].y > 0) perLight_[i] = glm::ivec4(perLight[i], 0, 0);

@@ -134,6 +134,8 @@ public:
     void prepare(const ParticleSet& particles, const MediaRenderSettings& settings);
     // World bounds of the particles: a host's shadow maps must cover them too.
     Aabb bounds() const { return bounds_; }
+    // Whether this frame's settings read HostFrame::occluders (blocks mode); a host may skip them otherwise.
+    bool readsOccluders() const { return settings_.mode == MediaMode::Blocks; }
 
     // In a host's frame graph (graph_frame.h): the light slices before the opaque pass, the medium after it.
     void addLightSlices(gpu::FrameGraph& graph, GraphFrame& frame);

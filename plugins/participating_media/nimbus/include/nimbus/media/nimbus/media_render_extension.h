@@ -24,8 +24,8 @@ private:
     GraphFrame frame_;  // read by the plugin's passes when the graph runs
 };
 
-// The contract's frame from the renderer's: camera, lights, environment, shadow views, mesh boxes.
-// `shadows` receives the shadow views (its texture is the graph's, not a GL name).
-HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows);
+// The contract's frame from the renderer's: camera, lights, environment, shadow views, and the mesh
+// boxes when `occluders`. `shadows` receives the shadow views (its texture is the graph's, not a GL name).
+HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows, bool occluders);
 
 }  // namespace nimbus::media
