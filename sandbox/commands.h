@@ -15,5 +15,6 @@ CommandRunner addCompareCommand(CLI::App& app);
 CommandRunner addValidateCommand(CLI::App& app);
 CommandRunner addBenchCommand(CLI::App& app);
 CommandRunner addSettingsCommand(CLI::App& app);
+CommandRunner addEditCommand(CLI::App& app);
 
 }  // namespace nimbus::sandbox

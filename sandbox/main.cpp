@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     runners["validate"] = addValidateCommand(app);
     runners["bench"] = addBenchCommand(app);
     runners["settings"] = addSettingsCommand(app);
+    runners["edit"] = addEditCommand(app);
 
     try {
         app.parse(argc, argv);

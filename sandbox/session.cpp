@@ -12,8 +12,10 @@
 
 namespace nimbus::sandbox {
 
-Session::Session(const SessionOptions& options) {
-    scene_ = std::make_shared<const assets::Scene>(assets::loadScene(options.scene));
+Session::Session(const SessionOptions& options)
+    : Session(std::make_shared<const assets::Scene>(assets::loadScene(options.scene)), options) {}
+
+Session::Session(std::shared_ptr<const assets::Scene> scene, const SessionOptions& options) : scene_(std::move(scene)) {
     app_ = std::make_unique<ecs::App>();
     app_->insertResource<Settings>();
     app_->addPlugin<render::RenderPlugin>();
@@ -24,6 +26,15 @@ Session::Session(const SessionOptions& options) {
     (void)media::ecs::readMediaSettings(&app_->resource<Settings>());
     scene::spawnScene(app_->world(), scene_);
     scene::simulateTo(*app_, options.time);
+}
+
+void Session::adoptRenderers(Session& previous) {
+    auto& scene = app_->resource<render::RendererState>();
+    scene.renderer = std::move(previous.app().resource<render::RendererState>().renderer);
+    auto& media = app_->resource<media::ecs::MediaRendererState>();
+    auto& old = previous.app().resource<media::ecs::MediaRendererState>();
+    media.renderer = std::move(old.renderer);
+    media.extension = std::move(old.extension);
 }
 
 double Session::time() const { return scene::simulationTime(*app_); }
@@ -40,7 +51,8 @@ assets::RgbImage Session::renderRealtime(int width, int height, const std::strin
     return app_->resource<render::RendererState>().renderer->readOutput();
 }
 
-std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height) {
+std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height,
+                                                   const assets::ResolvedCamera* cameraOverride) {
     auto out = std::make_unique<ReferenceScene>();
     ecs::World& world = session.app().world();
     out->world = scene::currentWorldTransforms(world);
@@ -50,7 +62,9 @@ std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::
     bounds.extend(media::particleBounds(out->particles));
     out->inputs.scene = &session.scene();
     out->inputs.world = &out->world;
-    out->inputs.camera = assets::resolveCamera(session.scene(), out->world, camera, bounds, static_cast<double>(width) / height);
+    out->inputs.camera = cameraOverride ? *cameraOverride
+                                        : assets::resolveCamera(session.scene(), out->world, camera, bounds,
+                                                                static_cast<double>(width) / height);
     out->inputs.lights = assets::resolveLights(session.scene(), out->world);
     out->inputs.particles = &out->particles;
     return out;

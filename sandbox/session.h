@@ -26,6 +26,13 @@ public:
     // Loads and validates the whole scene (throws InputError before anything is spawned), builds
     // the plugins, spawns the scene and simulates it to options.time.
     explicit Session(const SessionOptions& options);
+    // The same for a scene already loaded (the editor loads each edit from memory); options.scene
+    // is not read.
+    Session(std::shared_ptr<const assets::Scene> scene, const SessionOptions& options);
+
+    // Takes over `previous`'s renderers (compiled programs, pooled targets), so a session rebuilt
+    // for each edit does not recompile every shader. The images do not depend on it.
+    void adoptRenderers(Session& previous);
 
     ecs::App& app() { return *app_; }
     const assets::Scene& scene() const { return *scene_; }
@@ -48,7 +55,9 @@ struct ReferenceScene {
     media::ParticleSet particles;
     media::reference::ReferenceInputs inputs;
 };
-std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height);
+// `cameraOverride`, when given, replaces the named camera (the editor's free camera).
+std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height,
+                                                   const assets::ResolvedCamera* cameraOverride = nullptr);
 
 // What `sandbox render`, the demo and the editor render at unless told otherwise: the quality tier
 // a game would pick. Libraries and tests default to `exact`.

@@ -108,12 +108,18 @@ GltfSource readGltfSource(const std::filesystem::path& file, const std::string& 
     if (fileSize == 0) throwInputError(name, "", "", "the file is empty");
     if (fileSize > kMaxFileBytes) throwInputError(name, "", "", "files of 4 GiB or more are not supported");
 
-    GltfSource src;
-    src.bytes.resize(static_cast<std::size_t>(fileSize));
+    std::vector<unsigned char> bytes(static_cast<std::size_t>(fileSize));
     std::ifstream in(file, std::ios::binary);
-    if (!in.read(reinterpret_cast<char*>(src.bytes.data()), static_cast<std::streamsize>(src.bytes.size())))
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
         throwInputError(name, "", "", "cannot read the file");
+    return parseGltfBytes(std::move(bytes), name);
+}
 
+GltfSource parseGltfBytes(std::vector<unsigned char> bytes, const std::string& name) {
+    if (bytes.empty()) throwInputError(name, "", "", "the file is empty");
+    if (bytes.size() > kMaxFileBytes) throwInputError(name, "", "", "files of 4 GiB or more are not supported");
+    GltfSource src;
+    src.bytes = std::move(bytes);
     src.binary = src.bytes.size() >= 4 && std::memcmp(src.bytes.data(), "glTF", 4) == 0;
     if (src.binary) {
         splitGlb(src, name);

@@ -25,4 +25,7 @@ struct GltfSource {
 // empty, truncated or inconsistent file and for malformed JSON (with line and column).
 GltfSource readGltfSource(const std::filesystem::path& file, const std::string& displayName);
 
+// The same for bytes already in memory (the editor's edited document).
+GltfSource parseGltfBytes(std::vector<unsigned char> bytes, const std::string& displayName);
+
 }  // namespace nimbus::assets

@@ -244,13 +244,9 @@ void checkWorldTransformsFinite(const Scene& scene, const Json& root) {
                                     "the world transform is not finite (values too large)");
 }
 
-}  // namespace
 
-std::string Scene::displayName() const { return document ? document->displayName : path.string(); }
-
-Scene loadScene(const std::filesystem::path& file) {
+Scene loadSceneFromSource(GltfSource src, const std::filesystem::path& file) {
     const std::string name = file.string();
-    GltfSource src = readGltfSource(file, name);
     std::error_code ec;
     const std::filesystem::path absolute = std::filesystem::absolute(file, ec);
     const std::filesystem::path baseDirectory = (ec ? file : absolute).parent_path();
@@ -287,6 +283,16 @@ Scene loadScene(const std::filesystem::path& file) {
     scene.document = document;
     checkWorldTransformsFinite(scene, root);
     return scene;
+}
+
+}  // namespace
+
+std::string Scene::displayName() const { return document ? document->displayName : path.string(); }
+
+Scene loadScene(const std::filesystem::path& file) { return loadSceneFromSource(readGltfSource(file, file.string()), file); }
+
+Scene loadSceneFromMemory(std::vector<unsigned char> bytes, const std::filesystem::path& file) {
+    return loadSceneFromSource(parseGltfBytes(std::move(bytes), file.string()), file);
 }
 
 }  // namespace nimbus::assets

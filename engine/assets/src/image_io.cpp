@@ -33,36 +33,47 @@ bool isLinearFormat(const std::filesystem::path& file) {
     return ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff" || ext == ".pfm";
 }
 
-void writeImage(const std::filesystem::path& file, const RgbImage& image, const ImageWriteOptions& options) {
+namespace {
+
+// Writes w×h×3 `pixels` of `type` (FLOAT for linear formats, UINT8 display values otherwise).
+void writePixels(const std::filesystem::path& file, int width, int height, OIIO::TypeDesc type, const void* pixels) {
     const std::string name = file.string();
-    if (image.width <= 0 || image.height <= 0) throwInputError(name, "", "", "cannot write an empty image");
+    if (width <= 0 || height <= 0) throwInputError(name, "", "", "cannot write an empty image");
     if (file.has_parent_path()) {
         std::error_code ec;
         std::filesystem::create_directories(file.parent_path(), ec);
     }
     auto out = OIIO::ImageOutput::create(name);
     if (!out) throwInputError(name, "", "", "no image writer for this file extension (" + OIIO::geterror() + ")");
-
-    const bool linear = isLinearFormat(file);
-    OIIO::ImageSpec spec(image.width, image.height, 3, linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (linear) {
+    OIIO::ImageSpec spec(width, height, 3, type);
+    if (type == OIIO::TypeDesc::FLOAT) {
         spec.attribute("compression", "zip");
     } else {
         spec.attribute("oiio:ColorSpace", "sRGB");
     }
     if (!out->open(name, spec)) throwInputError(name, "", "", "cannot open for writing: " + out->geterror());
-
-    bool ok = false;
-    if (linear) {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
-    } else {
-        std::vector<unsigned char> bytes(image.rgb.size());
-        for (std::size_t i = 0; i < bytes.size(); ++i)
-            bytes[i] = static_cast<unsigned char>(std::lround(255.0f * srgbEncode(image.rgb[i] * options.exposure)));
-        ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-    }
-    if (!ok) throwInputError(name, "", "", "write failed: " + out->geterror());
+    if (!out->write_image(type, pixels)) throwInputError(name, "", "", "write failed: " + out->geterror());
     if (!out->close()) throwInputError(name, "", "", "close failed: " + out->geterror());
+}
+
+}  // namespace
+
+void writeImage(const std::filesystem::path& file, const RgbImage& image, const ImageWriteOptions& options) {
+    if (isLinearFormat(file)) return writePixels(file, image.width, image.height, OIIO::TypeDesc::FLOAT, image.rgb.data());
+    writeDisplayPixels(file, image.width, image.height, displayEncode(image, options.exposure));
+}
+
+std::vector<std::uint8_t> displayEncode(const RgbImage& image, float exposure) {
+    std::vector<std::uint8_t> bytes(image.rgb.size());
+    for (std::size_t i = 0; i < bytes.size(); ++i)
+        bytes[i] = static_cast<std::uint8_t>(std::lround(255.0f * srgbEncode(image.rgb[i] * exposure)));
+    return bytes;
+}
+
+void writeDisplayPixels(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgb8) {
+    if (rgb8.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3)
+        throwInputError(file.string(), "", "", "pixel count does not match the image size");
+    writePixels(file, width, height, OIIO::TypeDesc::UINT8, rgb8.data());
 }
 
 RgbImage readImage(const std::filesystem::path& file) {

@@ -23,6 +23,7 @@ void renderFrame(ecs::World& world) {
     assets::Aabb extra;
     for (auto* e : extensions) extra.extend(e->bounds());
     state.lastInput = gatherFrameInput(world, request.settings, request.camera, extra);
+    if (request.cameraOverride) state.lastInput.camera = *request.cameraOverride;
     state.lastInput.gpuScene = state.gpuScene.get();
     state.renderer->render(state.lastInput, request.settings, extensions, request.timer);
 }

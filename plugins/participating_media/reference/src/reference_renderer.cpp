@@ -171,6 +171,7 @@ assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats) const {
     std::unique_ptr<ProgressBar> progress;
     if (m.settings.progress) progress = std::make_unique<ProgressBar>("reference", static_cast<std::size_t>(tiles));
     std::atomic<int> nextTile{0};
+    if (m.settings.watch) m.settings.watch->tilesTotal.store(tiles);
     std::vector<std::size_t> evaluations(static_cast<std::size_t>(threads), 0), unconverged(static_cast<std::size_t>(threads), 0);
     std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
 
@@ -180,6 +181,7 @@ assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats) const {
         try {
             Scratch scratch;
             for (int tile = nextTile.fetch_add(1); tile < tiles; tile = nextTile.fetch_add(1)) {
+                if (m.settings.watch && m.settings.watch->cancel.load()) break;
                 const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
                 for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
                     for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
@@ -190,6 +192,7 @@ assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats) const {
                         unconverged[worker] += r.converged ? 0 : 1;
                     }
                 if (progress) progress->advance();
+                if (m.settings.watch) m.settings.watch->tilesDone.fetch_add(1);
             }
         } catch (...) {
             errors[worker] = std::current_exception();

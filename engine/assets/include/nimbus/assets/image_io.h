@@ -4,6 +4,7 @@
 // EXR (and other float formats) hold linear radiance exactly as computed (32-bit float RGB).
 // PNG/JPEG are display-encoded: L · exposure, clamped to [0, 1], sRGB transfer function, 8 bits.
 // No tone curve is applied, so a PNG pixel is a plain function of the EXR pixel (docs/scene-format.md).
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -42,6 +43,12 @@ bool isLinearFormat(const std::filesystem::path& file);
 
 // Writes by file extension. Throws nimbus::InputError (unwritable path, unknown format).
 void writeImage(const std::filesystem::path& file, const RgbImage& image, const ImageWriteOptions& options = {});
+
+// Display encoding as PNG writing does it: 8-bit sRGB of L · exposure clamped to [0, 1], RGB rows.
+std::vector<std::uint8_t> displayEncode(const RgbImage& image, float exposure = 1.0f);
+
+// Writes 8-bit RGB pixels that are already display values (a window screenshot), row 0 at the top.
+void writeDisplayPixels(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgb8);
 
 // Reads any format OIIO knows. Display-encoded 8/16-bit files are decoded back to linear with the
 // sRGB transfer function (no exposure is undone). Throws nimbus::InputError with the reason.

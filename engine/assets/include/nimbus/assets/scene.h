@@ -157,6 +157,10 @@ struct Scene {
 // ignored, as glTF says.
 Scene loadScene(const std::filesystem::path& file);
 
+// The same for a file's bytes already in memory (the editor validates each edit this way): `file`
+// is where the bytes would live, for relative URIs and for messages.
+Scene loadSceneFromMemory(std::vector<unsigned char> bytes, const std::filesystem::path& file);
+
 // Reads a FLOAT accessor with `components` per element (1 = SCALAR, 3 = VEC3, ...) for a plugin.
 // `object` and `field` name where the reference came from, for the error message. Refuses an index
 // out of range, a wrong type, a sparse or normalized accessor and non-finite values.

@@ -5,6 +5,7 @@
 //
 // Does not: create the GL context (the host does, before the first Render phase) or write files.
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +25,7 @@ struct RenderRequest {
     bool enabled = false;
     RenderSettings settings;
     std::string camera;          // camera or node name; empty: the scene's first camera
+    std::optional<assets::ResolvedCamera> cameraOverride;  // a free camera (the editor's), used instead of `camera`
     PassTimer* timer = nullptr;  // per-pass timings when measuring
 };
 

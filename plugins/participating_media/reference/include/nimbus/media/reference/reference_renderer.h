@@ -33,6 +33,7 @@
 //
 // Does not: multiple scattering, anti-aliasing, motion blur, mesh emission or PBR terms beyond
 // baseColor, or alpha (meshes are opaque).
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -46,11 +47,20 @@
 
 namespace nimbus::media::reference {
 
+// Lets another thread watch a render (the editor's progress bar) and stop it early: a cancelled
+// render returns with the tiles not yet started left black.
+struct ReferenceProgress {
+    std::atomic<int> tilesDone{0};
+    std::atomic<int> tilesTotal{0};
+    std::atomic<bool> cancel{false};
+};
+
 struct ReferenceSettings {
     int width = 0, height = 0;  // required
     double tolerance = 1e-4;    // relative change at which the quadrature stops
     int threads = 0;            // 0: std::thread::hardware_concurrency()
     bool progress = true;       // progress bar on stderr (only drawn on a terminal)
+    ReferenceProgress* watch = nullptr;  // optional, must outlive render()
 };
 
 struct ReferenceInputs {
