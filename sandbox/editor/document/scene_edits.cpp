@@ -179,7 +179,7 @@ void setField(Json& root, int node, const std::string& path, const Json& value) 
             if (!index || *index >= at->size()) refuse(root, node, path, "'" + parts[i] + "' is not an index of the array");
             at = &(*at)[*index];
         } else {
-            if (!at->is_object()) refuse(root, node, path, "'" + parts[i] + "' is inside a value that is not an object");
+            if (!at->is_object() && !at->is_null()) refuse(root, node, path, "'" + parts[i] + "' is inside a value that is not an object");
             at = &(*at)[parts[i]];
         }
     }
