@@ -25,8 +25,8 @@ constexpr double kPlayStep = 1.0 / 30.0;  // playback advances scene time by one
 gpu::ContextDesc windowDesc(const EditorOptions& options) {
     gpu::ContextDesc desc{.kind = gpu::ContextKind::Window, .width = 1600, .height = 960, .title = "Nimbus editor"};
     if (options.viewportSize) {
-        desc.width = options.viewportSize->x + static_cast<int>(kOutlinerWidth + kInspectorWidth) + 20;
-        desc.height = options.viewportSize->y + static_cast<int>(kBottomHeight + kStatusHeight) + 80;
+        desc.width = std::max(1280, options.viewportSize->x + static_cast<int>(kOutlinerWidth + kInspectorWidth) + 20);
+        desc.height = std::max(800, options.viewportSize->y + static_cast<int>(kBottomHeight + kStatusHeight) + 80);
     }
     return desc;
 }

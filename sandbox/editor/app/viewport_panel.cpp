@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 
@@ -128,6 +129,21 @@ void ViewportPanel::upload(const assets::RgbImage& image, gpu::Texture& texture)
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
 }
 
+// The heat map is see-through where the error is small, so the render shows under it.
+void ViewportPanel::uploadHeat(const assets::RgbImage& heat) {
+    if (!heatTexture_ || heatTexture_.desc().width != heat.width || heatTexture_.desc().height != heat.height)
+        heatTexture_ = gpu::Texture({.format = GL_RGBA8, .width = heat.width, .height = heat.height});
+    std::vector<std::uint8_t> pixels(heat.pixelCount() * 4);
+    for (std::size_t i = 0; i < heat.pixelCount(); ++i) {
+        const float r = heat.rgb[3 * i], g = heat.rgb[3 * i + 1], b = heat.rgb[3 * i + 2];
+        pixels[4 * i] = static_cast<std::uint8_t>(255.0f * r);
+        pixels[4 * i + 1] = static_cast<std::uint8_t>(255.0f * g);
+        pixels[4 * i + 2] = static_cast<std::uint8_t>(255.0f * b);
+        pixels[4 * i + 3] = static_cast<std::uint8_t>(200.0f * std::min(1.0f, std::max({r, g, b})));
+    }
+    glTextureSubImage2D(heatTexture_.id(), 0, 0, 0, heat.width, heat.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+}
+
 std::optional<std::string> ViewportPanel::draw(EditorState& state, ReferenceSnapshot& snapshot) {
     ImGui::RadioButton("Move (W)", reinterpret_cast<int*>(&gizmoMode), static_cast<int>(GizmoMode::Translate));
     ImGui::SameLine();
@@ -136,6 +152,8 @@ std::optional<std::string> ViewportPanel::draw(EditorState& state, ReferenceSnap
     ImGui::RadioButton("Scale (R)", reinterpret_cast<int*>(&gizmoMode), static_cast<int>(GizmoMode::Scale));
     ImGui::SameLine();
     ImGui::Checkbox("Bounds", &showBounds);
+    ImGui::SameLine();
+    ImGui::Checkbox("Error", &showHeatMap);
     ImGui::SameLine();
     if (ImGui::Button("Frame (F)")) frameSelection(state);
     ImGui::SameLine();
@@ -152,9 +170,8 @@ std::optional<std::string> ViewportPanel::draw(EditorState& state, ReferenceSnap
     const auto* result = snapshot.result();
     if (showHeatMap && result && snapshot.revision() == state.revision() && result->heat.width == image_.width &&
         result->heat.height == image_.height) {
-        if (heatRevision_ != snapshot.revision()) upload(result->heat, heatTexture_), heatRevision_ = snapshot.revision();
-        ImGui::GetWindowDrawList()->AddImage(textureId(heatTexture_), cursor, ImVec2(cursor.x + shown.x, cursor.y + shown.y),
-                                             ImVec2(0, 0), ImVec2(1, 1), IM_COL32(255, 255, 255, 170));
+        if (heatRevision_ != snapshot.revision()) uploadHeat(result->heat), heatRevision_ = snapshot.revision();
+        ImGui::GetWindowDrawList()->AddImage(textureId(heatTexture_), cursor, ImVec2(cursor.x + shown.x, cursor.y + shown.y));
     }
     drawOverlays(state, origin);
     bool gizmoHovered = false;

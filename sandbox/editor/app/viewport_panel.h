@@ -55,6 +55,7 @@ public:
 private:
     assets::ResolvedCamera shownCamera(EditorState& state) const;
     void upload(const assets::RgbImage& image, gpu::Texture& texture);
+    void uploadHeat(const assets::RgbImage& heat);
     void handleCamera(EditorState& state, bool hovered);
     std::optional<std::string> handleGizmo(EditorState& state, glm::dvec2 origin, bool& gizmoHovered);
     void drawOverlays(EditorState& state, glm::dvec2 origin);

@@ -78,7 +78,8 @@ void nodeRow(EditorState& state, int node, OutlinerAction& action) {
     ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_OpenOnArrow | ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_SpanAvailWidth;
     if (children.empty()) flags |= ImGuiTreeNodeFlags_Leaf;
     if (node == state.selected()) flags |= ImGuiTreeNodeFlags_Selected;
-    const std::string label = nodeLabel(state.json(), node);
+    const Json name = getField(state.json(), node, "name");
+    const std::string label = name.is_string() ? name.get<std::string>() : "node " + std::to_string(node);
     const bool open = ImGui::TreeNodeEx(reinterpret_cast<void*>(static_cast<std::intptr_t>(node)), flags, "%s", label.c_str());
     if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) state.select(node);
     if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) action.openRename = true;

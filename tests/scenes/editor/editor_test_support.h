@@ -1,0 +1,25 @@
+#pragma once
+// Running `sandbox edit` under xvfb-run with a script, for the editor's scene tests.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "nimbus/assets/image_io.h"
+#include "process.h"
+
+namespace nimbus::test {
+
+inline const std::filesystem::path kContentScenes = std::filesystem::path(NIMBUS_CONTENT_DIR_FOR_TESTS) / "scenes";
+
+// Writes `lines` to DIR/script.txt and runs the editor on `scene` with it at a fixed viewport size.
+ProcessResult runEditor(const TempFolder& dir, const std::filesystem::path& scene, const std::vector<std::string>& lines,
+                        const std::string& viewportSize = "128x72", const std::vector<std::string>& extra = {});
+
+// `sandbox render` of the same scene as the editor's default view: fast quality.
+assets::RgbImage renderWithSandbox(const TempFolder& dir, const std::filesystem::path& scene, const std::string& size,
+                                   double time = 0.0);
+
+// The number after `key` in `text` ("rel_rmse 0.036..."), NaN when absent.
+double numberAfter(const std::string& text, const std::string& key);
+
+}  // namespace nimbus::test
