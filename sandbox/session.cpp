@@ -40,6 +40,11 @@ void Session::adoptRenderers(Session& previous) {
 double Session::time() const { return scene::simulationTime(*app_); }
 
 assets::RgbImage Session::renderRealtime(int width, int height, const std::string& camera) {
+    renderFrame(width, height, camera);
+    return app_->resource<render::RendererState>().renderer->readOutput();
+}
+
+void Session::renderFrame(int width, int height, const std::string& camera) {
     auto& request = app_->resource<render::RenderRequest>();
     request.enabled = true;
     request.settings.width = width;
@@ -48,7 +53,6 @@ assets::RgbImage Session::renderRealtime(int width, int height, const std::strin
     app_->runPhase(ecs::phases::kPrepare);
     app_->runPhase(ecs::phases::kRender);
     app_->runPhase(ecs::phases::kPresent);
-    return app_->resource<render::RendererState>().renderer->readOutput();
 }
 
 std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height,

@@ -42,6 +42,8 @@ public:
     // One real-time frame of the current state at width×height through `camera` (empty: the
     // scene's first). Needs a current GL context that outlives the session. Rendering stays on.
     assets::RgbImage renderRealtime(int width, int height, const std::string& camera = "");
+    // The same frame left in the renderer's output() for the caller to show (no read-back).
+    void renderFrame(int width, int height, const std::string& camera = "");
 
 private:
     std::shared_ptr<const assets::Scene> scene_;

@@ -249,8 +249,53 @@ def main(bench_dir, docs_dir):
                       "(goal ≤ 60 s), %.1f source evaluations per pixel, %d unconverged pixels." % (
                           b.get("particles", 0), b.get("seconds", 0), os.cpu_count() or 0, b.get("evaluations_per_pixel", 0),
                           b.get("unconverged_pixels", 0)), ""]
+    lines += editor_section(bench_dir)
     open(os.path.join(docs_dir, "PERFORMANCE.md"), "w").write("\n".join(lines))
 
 
+EDITOR_HEADING = "## Editor viewport"
+
+
+def editor_section(bench_dir):
+    """The editor's frame rate from scripts/bench-editor's editor_fps.txt (also written as JSON)."""
+    path = os.path.join(bench_dir, "editor_fps.txt")
+    if not os.path.exists(path):
+        return []
+    rows = {}
+    for line in open(path):
+        # "smoke 8 640x360 frames 20: 29.0 ms per frame (34.49 fps) at 640x360"
+        parts = line.split()
+        if len(parts) < 8 or parts[3] != "frames":
+            continue
+        rows.setdefault(parts[0], {"time": float(parts[1])})[parts[2]] = float(parts[5])
+    json.dump(rows, open(os.path.join(bench_dir, "editor_fps.json"), "w"), indent=2)
+    sizes = ["1280x720", "640x360"]
+    lines = [EDITOR_HEADING, "",
+             "`scripts/bench-editor`: `sandbox edit SCENE --viewport-size WxH --script` under xvfb-run, fast tier (the "
+             "editor's default), mean wall time of 20 editor frames after 3 warm-up frames. An editor frame is its "
+             "whole loop: the viewport render, the ImGui panels and the swap. The goal is 10 fps at the preview size (640×360).", "",
+             "| scene | t (s) | " + " | ".join("%s ms (fps)" % s for s in sizes) + " |",
+             "|---|---|" + "---|" * len(sizes)]
+    for scene, row in rows.items():
+        cells = ["%.0f (%.1f)" % (row[s], 1000.0 / row[s]) if s in row else "–" for s in sizes]
+        lines.append("| %s | %g | %s |" % (scene, row["time"], " | ".join(cells)))
+    return lines + [""]
+
+
+def replace_editor_section(bench_dir, docs_dir):
+    """Rewrites only the editor section of an existing PERFORMANCE.md (scripts/bench-editor)."""
+    path = os.path.join(docs_dir, "PERFORMANCE.md")
+    text = open(path).read().split("\n")
+    if EDITOR_HEADING in text:
+        start = text.index(EDITOR_HEADING)
+        end = next((i for i in range(start + 1, len(text)) if text[i].startswith("## ")), len(text))
+        text = text[:start] + text[end:]
+    text = [l for l in text] + editor_section(bench_dir)
+    open(path, "w").write("\n".join(text))
+
+
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    if sys.argv[1] == "--editor":
+        replace_editor_section(sys.argv[2], sys.argv[3])
+    else:
+        main(sys.argv[1], sys.argv[2])

@@ -218,7 +218,7 @@ void EditorApp::shortcuts() {
 void EditorApp::startReference() {
     viewport_->render(*state_, false);
     snapshot_.start(state_->session(), viewport_->freeCamera() ? "" : viewport_->sceneCamera(), viewport_->cameraOverride(),
-                    viewport_->image(), state_->revision());
+                    viewport_->image(*state_), state_->revision());
 }
 
 // Walks the quality ladder with the viewport's size, then keeps the chosen rung as the view's settings.
@@ -251,7 +251,7 @@ void EditorApp::renderFrames(int count) {
     for (int i = 0; i < count; ++i) frame(true);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("frames %d: %.1f ms per frame (%.2f fps) at %dx%d\n", viewport_->renderedFrames() - before,
-                1000.0 * seconds / count, count / seconds, viewport_->image().width, viewport_->image().height);
+                1000.0 * seconds / count, count / seconds, viewport_->size().x, viewport_->size().y);
     std::fflush(stdout);
 }
 
@@ -271,7 +271,7 @@ void EditorApp::screenshot(const std::filesystem::path& file) {
 
 void EditorApp::writeViewport(const std::filesystem::path& file) {
     viewport_->render(*state_, false);
-    assets::writeImage(file, viewport_->image());
+    assets::writeImage(file, viewport_->image(*state_));
 }
 
 void EditorApp::reference(const std::filesystem::path& file) {

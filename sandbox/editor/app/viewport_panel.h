@@ -5,6 +5,7 @@
 //
 // Does not: render when nothing it shows changed, unless asked (playing, `frames N`, benchmarks).
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/pass_timer.h"
 #include "reference_snapshot.h"
+#include "viewport_display.h"
 #include "viewport/gizmo.h"
 #include "viewport/orbit_camera.h"
 
@@ -31,7 +33,9 @@ public:
     // a refused one is returned as its message.
     std::optional<std::string> draw(EditorState& state, ReferenceSnapshot& snapshot);
 
-    const assets::RgbImage& image() const { return image_; }
+    // The last frame, linear, read back from the renderer on first use.
+    const assets::RgbImage& image(EditorState& state);
+    glm::ivec2 size() const { return renderedSize_; }
     std::uint64_t renderedRevision() const { return renderedRevision_; }
     double lastFrameMs() const { return lastFrameMs_; }
     const gpu::GlPassTimer& timer() const { return timer_; }
@@ -54,7 +58,6 @@ public:
 
 private:
     assets::ResolvedCamera shownCamera(EditorState& state) const;
-    void upload(const assets::RgbImage& image, gpu::Texture& texture);
     void uploadHeat(const assets::RgbImage& heat);
     void handleCamera(EditorState& state, bool hovered);
     std::optional<std::string> handleGizmo(EditorState& state, glm::dvec2 origin, bool& gizmoHovered);
@@ -64,7 +67,9 @@ private:
     std::optional<glm::ivec2> fixedSize_;
     glm::ivec2 size_{640, 360};
     assets::RgbImage image_;
-    gpu::Texture texture_, heatTexture_;
+    bool imageStale_ = true;
+    std::unique_ptr<ViewportDisplay> display_;  // made with the first frame, when a context is current
+    gpu::Texture heatTexture_;
     std::uint64_t heatRevision_ = ~0ull;
     std::uint64_t renderedRevision_ = ~0ull;
     glm::ivec2 renderedSize_{0, 0};

@@ -15,7 +15,7 @@ namespace {
 
 void frameStats(EditorState& state, const ViewportPanel& viewport) {
     const double ms = viewport.lastFrameMs();
-    ImGui::Text("viewport %dx%d: %.1f ms (%.1f fps)", viewport.image().width, viewport.image().height, ms, ms > 0 ? 1000.0 / ms : 0.0);
+    ImGui::Text("viewport %dx%d: %.1f ms (%.1f fps)", viewport.size().x, viewport.size().y, ms, ms > 0 ? 1000.0 / ms : 0.0);
     const auto* media = state.session().app().world().tryResource<media::ecs::MediaRendererState>();
     if (media && media->renderer) {
         const auto& s = media->renderer->stats();

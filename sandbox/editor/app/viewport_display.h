@@ -1,0 +1,25 @@
+#pragma once
+// The viewport's display pass: turns the renderer's linear output into the 8-bit sRGB texture the
+// viewport window shows, on the GPU, so a frame needs no read-back or CPU encoding.
+//
+// Does not: tone-map (the viewport shows what a PNG from `sandbox render` shows).
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/gpu/shader_program.h"
+
+namespace nimbus::sandbox::editor {
+
+class ViewportDisplay {
+public:
+    ViewportDisplay();
+    // Encodes `radiance` (RGBA float, GL row order) into display(), resized to match.
+    void encode(const gpu::Texture& radiance);
+    const gpu::Texture& display() const { return display_; }
+
+private:
+    gpu::Program program_;
+    gpu::Framebuffer framebuffer_;
+    gpu::VertexArray vertexArray_;  // core profile needs one bound, even with no attributes
+    gpu::Texture display_;
+};
+
+}  // namespace nimbus::sandbox::editor
