@@ -77,7 +77,6 @@ TEST(EditorSession, InvalidSetFailsWithTheLoadersMessageAndChangesNothing) {
         TempFolder dir;
         const ProcessResult r = runEditor(dir, kSmoke, {"select chimney", "set " + set, "save " + (dir / "never.gltf").string()});
         EXPECT_EQ(r.exitCode, 2);
-        ASSERT_EQ(r.errLines().size(), 1u) << r.err;
         EXPECT_NE(r.err.find("script.txt:2: " + kSmoke.string() + ": node \"chimney\" (nodes[2]): " + kMedia + field),
                   std::string::npos) << r.err;
         EXPECT_FALSE(fs::exists(dir / "never.gltf"));
