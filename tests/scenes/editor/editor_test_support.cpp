@@ -1,10 +1,58 @@
 #include "editor_test_support.h"
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace nimbus::test {
+namespace {
+
+// One Xvfb server for the whole test program, started on first use. Xvfb picks a free display
+// itself (-displayfd), which per-run `xvfb-run -a` does racily (and its clean-up can fail with
+// exit 5 under load).
+class VirtualDisplay {
+public:
+    VirtualDisplay() {
+        int fds[2];
+        if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+        pid_ = fork();
+        if (pid_ == 0) {
+            close(fds[0]);
+            const std::string fd = std::to_string(fds[1]);
+            execl(NIMBUS_XVFB, "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1920x1200x24", "-nolisten", "tcp",
+                  static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        close(fds[1]);
+        std::string number;
+        char c = 0;
+        while (read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+        close(fds[0]);
+        if (pid_ < 0 || number.empty()) throw std::runtime_error("Xvfb did not start (" NIMBUS_XVFB ")");
+        display_ = ":" + number;
+    }
+    ~VirtualDisplay() {
+        kill(pid_, SIGTERM);
+        waitpid(pid_, nullptr, 0);
+    }
+    const std::string& display() const { return display_; }
+
+private:
+    pid_t pid_ = -1;
+    std::string display_;
+};
+
+const std::string& display() {
+    static VirtualDisplay server;  // lives until the test program exits
+    return server.display();
+}
+
+}  // namespace
 
 ProcessResult runEditor(const TempFolder& dir, const std::filesystem::path& scene, const std::vector<std::string>& lines,
                         const std::string& viewportSize, const std::vector<std::string>& extra) {
@@ -13,16 +61,13 @@ ProcessResult runEditor(const TempFolder& dir, const std::filesystem::path& scen
         std::ofstream out(script);
         for (const std::string& line : lines) out << line << '\n';
     }
-    std::vector<std::string> args = {"-a", "-s", "-screen 0 1920x1200x24", sandboxExecutable().string(), "edit"};
+    // The recent-files list goes to the test's folder, not the user's.
+    std::vector<std::string> args = {"DISPLAY=" + display(), "XDG_CONFIG_HOME=" + (dir / "config").string(),
+                                     sandboxExecutable().string(), "edit"};
     if (!scene.empty()) args.push_back(scene.string());
     args.insert(args.end(), {"--script", script.string(), "--viewport-size", viewportSize});
     args.insert(args.end(), extra.begin(), extra.end());
-    // The recent-files list goes to the test's folder, not the user's.
-    return runProcess("/usr/bin/env", [&] {
-        std::vector<std::string> env = {"XDG_CONFIG_HOME=" + (dir / "config").string(), NIMBUS_XVFB_RUN};
-        env.insert(env.end(), args.begin(), args.end());
-        return env;
-    }());
+    return runProcess("/usr/bin/env", args);
 }
 
 assets::RgbImage renderWithSandbox(const TempFolder& dir, const std::filesystem::path& scene, const std::string& size, double time) {

@@ -1,5 +1,5 @@
 #pragma once
-// Running `sandbox edit` under xvfb-run with a script, for the editor's scene tests.
+// Running `sandbox edit` with a script on a private Xvfb display, for the editor's scene tests.
 #include <filesystem>
 #include <string>
 #include <vector>
