@@ -12,6 +12,9 @@ layout(std140, binding = 0) uniform Frame {
     vec4 ambient;
     vec4 background;
     ivec4 counts;        // x: lights, y: unused, z: shadow map size, w: PCF radius
+    vec4 fogColor;       // rgb: colour, w: kind (0 none, 1 exp, 2 exp2, 3 linear, 4 height)
+    vec4 fogParams;      // density, start, end, falloff
+    vec4 fogHeight;      // x: frame origin height above the fog's base, y: background distance (1e30: infinite)
 } frame;
 
 bool frameOrthographic() { return frame.cameraForward.w > 0.5; }

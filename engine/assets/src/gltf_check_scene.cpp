@@ -1,5 +1,7 @@
 // Structural checks of the scene half of a glTF file: asset, extensions, cameras,
 // KHR_lights_punctual lights, nodes (values and hierarchy), scenes and animations (gltf_checks.h).
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <set>
@@ -53,6 +55,28 @@ void checkGltfAsset(const GltfCheckInput& in) {
 
 namespace {
 
+// The root `fog` object (scene-format.md §2.1): every key known, every value in range.
+void checkFog(const JsonPlace& parent, const Json& media) {
+    const Json* fog = optionalObject(parent, media, "fog");
+    if (!fog) return;
+    const JsonPlace place = parent.nested("fog");
+    const std::array<std::string, 7> known = {"mode", "color", "density", "start", "end", "base", "falloff"};
+    for (const auto& item : fog->items())
+        if (std::find(known.begin(), known.end(), item.key()) == known.end())
+            place.fail(item.key(), "unknown key (fog has mode, color, density, start, end, base, falloff)");
+    const auto mode = optionalEnum(place, *fog, "mode", {"exp", "exp2", "linear", "height"});
+    if (!mode) place.fail("mode", "is required: \"exp\", \"exp2\", \"linear\" or \"height\"");
+    optionalNumberArray(place, *fog, "color", 3, 0.0, kHuge);
+    optionalNumber(place, *fog, "density", 0.0, kHuge);
+    const double start = optionalNumber(place, *fog, "start", -kHuge, kHuge).value_or(0.0);
+    const auto end = optionalNumber(place, *fog, "end", -kHuge, kHuge);
+    optionalNumber(place, *fog, "base", -kHuge, kHuge);
+    optionalNumber(place, *fog, "falloff", 0.0, kHuge);
+    if (*mode == "linear" && !end) place.fail("end", "is required for linear fog");
+    if (end && *end <= start)
+        place.fail("end", "must be greater than start (" + Json(start).dump() + "), not " + Json(*end).dump());
+}
+
 void checkEnvironment(const GltfCheckInput& in) {
     const JsonPlace root{&in.file, "glTF root", ""};
     const Json* extensions = optionalObject(root, *in.root, "extensions");
@@ -63,6 +87,7 @@ void checkEnvironment(const GltfCheckInput& in) {
     const JsonPlace place{&in.file, std::string("root extension ") + kMediaExtension, ""};
     optionalNumberArray(place, *media, "background", 3, 0.0, kHuge);
     optionalNumberArray(place, *media, "ambient", 3, 0.0, kHuge);
+    checkFog(place, *media);
 }
 
 void checkLights(const GltfCheckInput& in) {

@@ -226,6 +226,23 @@ std::vector<int> findRootNodes(const Json& root, const std::vector<Node>& nodes)
     return roots;
 }
 
+// Checked by checkFog; absent values take the defaults of scene-format.md §2.1.
+Fog readFog(const Json& media) {
+    Fog fog;
+    if (!media.contains("fog")) return fog;
+    const Json& f = media["fog"];
+    const std::string mode = f["mode"].get<std::string>();
+    fog.mode = mode == "exp" ? FogMode::Exp : mode == "exp2" ? FogMode::Exp2 : mode == "linear" ? FogMode::Linear : FogMode::Height;
+    if (f.contains("color")) fog.color = glm::dvec3(f["color"][0].get<double>(), f["color"][1].get<double>(), f["color"][2].get<double>());
+    fog.density = f.value("density", 0.0);
+    fog.start = f.value("start", 0.0);
+    fog.hasEnd = f.contains("end");
+    fog.end = f.value("end", 0.0);
+    fog.base = f.value("base", 0.0);
+    fog.falloff = f.value("falloff", 0.0);
+    return fog;
+}
+
 glm::vec3 readColor(const Json& object, const char* key) {
     if (!object.contains(key)) return glm::vec3(0.0f);
     const Json& c = object[key];
@@ -278,6 +295,7 @@ Scene loadSceneFromSource(GltfSource src, const std::filesystem::path& file) {
             const Json& media = scene.extensions[kMediaExtension];
             scene.environment.background = readColor(media, "background");
             scene.environment.ambient = readColor(media, "ambient");
+            scene.environment.fog = readFog(media);
         }
     }
     scene.document = document;

@@ -9,7 +9,7 @@
 namespace nimbus::gpu {
 
 GpuFrame packFrame(const View& view, const glm::vec3& ambient, const glm::vec3& background, int lights, int shadowMapSize,
-                   int pcfRadius) {
+                   int pcfRadius, const FogParams& fog) {
     GpuFrame f{};
     f.viewProjection = view.viewProjection;
     f.view = view.view;
@@ -24,6 +24,11 @@ GpuFrame packFrame(const View& view, const glm::vec3& ambient, const glm::vec3& 
     f.ambient = glm::vec4(ambient, 0.0f);
     f.background = glm::vec4(background, 0.0f);
     f.counts = glm::ivec4(lights, 0, shadowMapSize, pcfRadius);
+    f.fogColor = glm::vec4(fog.color, static_cast<float>(fog.kind));
+    f.fogParams = glm::vec4(fog.density, fog.start, fog.end, fog.falloff);
+    // The height is taken in double before the float: frames far from the world origin keep it exact.
+    const double fogReach = fog.backgroundDistance > 0.0 ? std::min(fog.backgroundDistance, 1e30) : 1e30;
+    f.fogHeight = glm::vec4(static_cast<float>(view.origin.y - fog.base), static_cast<float>(fogReach), 0.0f, 0.0f);
     return f;
 }
 

@@ -40,7 +40,10 @@ public:
     void add(FrameGraph& graph, FrameContext& context, const gpu::Texture& output);
 
 private:
-    gpu::Program opaqueOnly_, layer_, upsample_;
+    enum Variant { kLayer = 1, kUpsample = 2, kFog = 4 };
+    GLuint program(int variant);  // compiled on first use
+
+    std::map<int, gpu::Program> programs_;
     gpu::Sampler clampedNearest_;  // the upsampling gathers depths at the layer's edges
     FullscreenTriangle triangle_;
 };

@@ -30,9 +30,10 @@ public:
 
     // The last refusal, for the status bar; cleared when read.
     std::optional<std::string> takeError();
+    // Sets the field as one undoable edit; a refusal is shown under the field.
+    void commit(int node, const std::string& path, const Json& value);
 
 private:
-    void commit(int node, const std::string& path, const Json& value);
     void showError(int node, const std::string& path);
     void treeValue(const std::string& label, int node, const std::string& path, const Json& value);
     static std::string key(int node, const std::string& path);

@@ -96,10 +96,19 @@ void materialSection(EditorState& state, FieldWidgets& f, int node) {
     if (seen.empty()) ImGui::TextDisabled("the glTF default material (add one to the file to tune it)");
 }
 
-void environmentSection(FieldWidgets& f) {
+void environmentSection(EditorState& state, FieldWidgets& f) {
     ImGui::TextUnformatted("Scene environment");
     f.colour("background", -1, kMedia + ".background", {0.0, 0.0, 0.0}, true);
     f.colour("ambient", -1, kMedia + ".ambient", {0.0, 0.0, 0.0}, true);
+    if (getField(state.json(), -1, kMedia + ".fog").is_null()) {
+        if (ImGui::Button("Add fog"))
+            f.commit(-1, kMedia + ".fog", {{"mode", "exp"}, {"density", 0.02}, {"color", {0.6, 0.65, 0.7}}});
+        return;
+    }
+    f.choice("fog mode", -1, kMedia + ".fog.mode", {"exp", "exp2", "linear", "height"}, "exp");
+    f.colour("fog colour", -1, kMedia + ".fog.color", {0.0, 0.0, 0.0}, true);
+    f.tree("fog", -1, kMedia + ".fog");
+    if (ImGui::Button("Remove fog")) f.commit(-1, kMedia + ".fog", nullptr);
 }
 
 }  // namespace
@@ -107,7 +116,7 @@ void environmentSection(FieldWidgets& f) {
 void drawInspector(EditorState& state, FieldWidgets& f) {
     const int node = state.selected();
     if (node < 0) {
-        environmentSection(f);
+        environmentSection(state, f);
         return;
     }
     ImGui::PushID(node);

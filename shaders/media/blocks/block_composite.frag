@@ -7,6 +7,7 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
+#include "common/fog.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
 #include "media/common/slices.glsl"
@@ -117,5 +118,6 @@ void main() {
 #else
     source = blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer, BLOCK_SHADING_PIECES, false);
 #endif
+    if (fogEnabled()) source = fogSeen(source, fogFactor(origin, dir, clamp(profile.mean, 0.0, tSurface)));  // at the block's mass centre
     outColor = vec4(source * alpha, alpha);
 }

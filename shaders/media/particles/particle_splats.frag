@@ -7,6 +7,7 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
+#include "common/fog.glsl"
 #include "common/lights.glsl"
 #include "media/common/optics.glsl"
 #include "media/common/kernel_table.glsl"
@@ -121,5 +122,6 @@ void main() {
         source += vAlbedo * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, beta, alpha, p);
     } while (++k < MAX_FRAGMENT_LAMPS && uFragmentLamps[min(k, MAX_FRAGMENT_LAMPS - 1)] >= 0);
 #endif
+    if (fogEnabled()) source = fogSeen(source, fogFactor(origin, dir, clamp(tc, 0.0, tSurface)));  // at the closest approach
     outColor = vec4(source * alpha, alpha);
 }

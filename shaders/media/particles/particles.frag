@@ -6,6 +6,7 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
+#include "common/fog.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
 #include "media/common/slices.glsl"
@@ -47,5 +48,6 @@ void main() {
     float lo = max(u0, -chord.halfChord), hi = min(u1, chord.halfChord);
     LayerOrder layer = LayerOrder(vParticle.x, vParticle.y, tEnd, uSoftParticles != 0 ? 1e30 : tSurface);
     vec3 source = segmentSource(origin, dir, chord, radius, lo, hi, chordShadingPoint(chord, radius, u0, u1, tau), tau, particle, layer);
+    if (fogEnabled()) source = fogSeen(source, fogFactor(origin, dir, chord.tClosest + 0.5 * (lo + hi)));  // at the segment's middle
     outColor = vec4(source * alpha, alpha);
 }

@@ -1,6 +1,7 @@
 #include "nimbus/media/nimbus/media_render_extension.h"
 
 #include "nimbus/media/gpu_bindings.h"
+#include "nimbus/render/frame_data.h"
 #include "nimbus/render/light_views.h"
 
 namespace nimbus::media {
@@ -11,6 +12,7 @@ HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows
     frame.lights = render::punctualLights(context.input.lights);
     frame.ambient = context.input.environment.ambient;
     frame.background = context.input.environment.background;
+    frame.fog = render::fogParams(context.input.environment.fog, context.view.zfar);
     shadows.texture = 0;
     shadows.size = context.settings.shadowMapSize;
     shadows.pcfRadius = context.settings.pcfRadius;

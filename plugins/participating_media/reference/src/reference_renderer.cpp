@@ -11,6 +11,7 @@
 #include "light_transport.h"
 #include "medium_quadrature.h"
 #include "nimbus/assets/light_model.h"
+#include "nimbus/assets/fog.h"
 #include "nimbus/base/progress.h"
 #include "nimbus/media/optics.h"
 #include "nimbus/media/particle_bvh.h"
@@ -65,6 +66,7 @@ struct ReferenceRenderer::Impl {
     std::unique_ptr<LightTransport> light;
     CameraFrame frame;
     glm::dvec3 background{0.0}, ambient{0.0};
+    double fogReach = 0.0;  // how far background rays see fog
     double floor = 0.0;
 
     RayRadiance trace(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear, double meshFar,
@@ -91,6 +93,7 @@ ReferenceRenderer::ReferenceRenderer(const ReferenceInputs& inputs, const Refere
     m.ambient = glm::dvec3(inputs.scene->environment.ambient);
     m.light = std::make_unique<LightTransport>(m.inputs.lights, *m.meshes, m.bvh, *m.particles, m.ambient);
     m.frame = makeCameraFrame(inputs.camera, settings.width, settings.height);
+    m.fogReach = assets::fogBackgroundDistance(inputs.scene->environment.fog, inputs.camera.params.zfar);
 
     // The scene's radiance scale, for the quadrature's absolute floor (reference_renderer.h).
     double scale = std::max(maxChannel(m.background), maxChannel(m.ambient));
@@ -121,9 +124,15 @@ RayRadiance ReferenceRenderer::Impl::trace(const glm::dvec3& origin, const glm::
     out.opticalDepth = scratch.medium.totalOpticalDepth();
     out.transmittance = transmittance(out.opticalDepth);
 
+    // Fog (scene-format.md §2.1): what lies at distance t is seen as f(t)·L + (1 − f(t))·colour, the
+    // surface at its distance (the background at the fog's reach) and the medium at every sample.
+    const assets::Fog& fog = inputs.scene->environment.fog;
+    const bool fogged = fog.mode != assets::FogMode::None;
     glm::dvec3 behind(0.0);  // T(0,d) L_s; skipped when nothing of it gets through
     if (out.transmittance > 0.0) {
         out.surface = hit ? light->surfaceRadiance(*hit, dir, doubleSided(hit->material), baseColor->at(*hit)) : background;
+        if (fogged)
+            out.surface = assets::applyFog(fog, assets::fogFactor(fog, origin.y, dir.y, hit ? hit->distance : fogReach), out.surface);
         behind = out.transmittance * out.surface;
     }
     out.radiance = behind;
@@ -135,7 +144,8 @@ RayRadiance ReferenceRenderer::Impl::trace(const glm::dvec3& origin, const glm::
     const ViewRayMedium& medium = scratch.medium;
     std::vector<double>& weights = scratch.weights;
     const SourceFunction source = [&](const RaySample& s) {
-        return light->mediumSource(origin, dir, medium, s.piece, s.t, weights);
+        const glm::dvec3 j = light->mediumSource(origin, dir, medium, s.piece, s.t, weights);
+        return fogged ? assets::applyFog(fog, assets::fogFactor(fog, origin.y, dir.y, s.t), j) : j;
     };
     lightCuts(inputs.lights, origin, dir, scratch.cuts);
     const QuadratureResult r = scratch.quadrature.integrate(medium, source, behind, q, scratch.cuts);

@@ -123,9 +123,25 @@ struct Animation {
 };
 
 // The root NIMBUS_participating_media values the engine itself needs (DESIGN.md §4).
+// Distance fog (scene-format.md §2.1, seed 003): what is seen at distance z along a ray is
+// f·L + (1 − f)·color, with f from the mode (assets/fog.h).
+enum class FogMode { None, Exp, Exp2, Linear, Height };
+
+struct Fog {
+    FogMode mode = FogMode::None;
+    glm::dvec3 color{0.0};
+    double density = 0.0;  // 1/m (exp, exp2, height at y = base)
+    double start = 0.0;    // m (linear)
+    double end = 0.0;      // m; how far rays that hit nothing see fog (linear: where f reaches 0)
+    bool hasEnd = false;   // exp, exp2, height without `end`: the camera's far plane
+    double base = 0.0;     // m (height): the world height where the density is `density`
+    double falloff = 0.0;  // 1/m (height): density · e^(−falloff·(y − base))
+};
+
 struct Environment {
     glm::vec3 background{0.0f};  // radiance of rays that hit nothing
     glm::vec3 ambient{0.0f};     // isotropic, unshadowed sky radiance
+    Fog fog;
 };
 
 class Document;  // the parsed glTF file, kept for accessor reads and for saving

@@ -29,6 +29,16 @@ inline constexpr std::size_t kMaxLightViews = 384;  // per block; shaders/common
 inline constexpr GLuint kShadowMapUnit = 1;
 inline constexpr GLuint kSceneDepthUnit = 3;
 
+// Distance fog as the shaders take it (shaders/common/fog.glsl, scene-format.md §2.1).
+enum class FogKind : int { None = 0, Exp = 1, Exp2 = 2, Linear = 3, Height = 4 };
+struct FogParams {
+    FogKind kind = FogKind::None;
+    glm::vec3 color{0.0f};
+    float density = 0.0f, start = 0.0f, end = 0.0f, falloff = 0.0f;
+    double base = 0.0;                // world height (height fog)
+    double backgroundDistance = 0.0;  // how far rays that hit nothing see fog; 0: infinitely far
+};
+
 struct alignas(16) GpuFrame {
     glm::mat4 viewProjection;
     glm::mat4 view;
@@ -41,6 +51,9 @@ struct alignas(16) GpuFrame {
     glm::vec4 ambient;        // rgb: L_amb
     glm::vec4 background;     // rgb: background radiance
     glm::ivec4 counts;        // x: lights, y: unused, z: shadow map size, w: pcf radius
+    glm::vec4 fogColor;       // rgb: fog colour, w: FogKind
+    glm::vec4 fogParams;      // density, start, end, falloff
+    glm::vec4 fogHeight;      // x: frame origin height above the fog's base, y: background distance (1e30: infinite)
 };
 
 struct alignas(16) GpuLight {
@@ -58,7 +71,7 @@ struct alignas(16) GpuLightView {
 };
 
 GpuFrame packFrame(const View& view, const glm::vec3& ambient, const glm::vec3& background, int lights, int shadowMapSize,
-                   int pcfRadius);
+                   int pcfRadius, const FogParams& fog = {});
 // `firstShadowView` −1: no shadow map.
 GpuLight packLight(const PunctualLight& light, const glm::dvec3& origin, int firstShadowView, int shadowViews);
 GpuLightView packLightView(const LightView& view, int firstLayer, float sliceCount, float texels);

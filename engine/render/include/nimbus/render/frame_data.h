@@ -25,6 +25,10 @@ using gpu::kShadowViewsBinding;
 using gpu::packLightView;
 
 // Owns the buffers and rewrites them each frame.
+// The scene's fog as the shaders take it; `zfar` (0: infinite) is where background rays stop
+// seeing fog when the fog gives no `end`.
+gpu::FogParams fogParams(const assets::Fog& fog, double zfar);
+
 class FrameData {
 public:
     FrameData();

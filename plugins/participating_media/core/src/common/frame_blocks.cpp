@@ -20,7 +20,7 @@ void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightVie
                          std::to_string(kMaxHostLights));
     const HostShadowMaps* shadows = host.shadows;
     frame_ = gpu::packFrame(host.camera, host.ambient, host.background, static_cast<int>(host.lights.size()),
-                            shadows ? shadows->size : 0, shadows ? shadows->pcfRadius : 0);
+                            shadows ? shadows->size : 0, shadows ? shadows->pcfRadius : 0, host.fog);
     static const std::vector<std::vector<gpu::LightView>> kNoShadows;
     gpu::PackedLights packed = gpu::packLights(host.lights, host.camera.origin, shadows ? shadows->views : kNoShadows, shadows ? shadows->size : 0);
     lights_ = std::move(packed.lights);

@@ -30,6 +30,7 @@
 #include <glm/glm.hpp>
 
 #include "nimbus/base/aabb.h"
+#include "nimbus/gpu/frame_layout.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/light_views.h"
 #include "nimbus/gpu/view.h"
@@ -70,6 +71,9 @@ struct HostFrame {
     std::vector<Light> lights;  // at most kMaxHostLights; indices match the host's mesh shader
     glm::vec3 ambient{0.0f};    // L_amb, radiance every particle scatters (DESIGN.md §2)
     glm::vec3 background{0.0f}; // what rays that hit nothing see
+    // The scene's distance fog (scene-format.md §2.1): the plugin fogs each particle at its
+    // distance; the host fogs its own meshes and background (shaders/common/fog.glsl does both).
+    gpu::FogParams fog;
     GLuint sceneDepth = 0;      // GL_TEXTURE_2D depth of the opaque scene (renderMedia; 0: no media drawn)
     // How sceneDepth encodes depth, for the camera's planes. Standard costs one full-screen pass
     // (`media_host_depth`) that re-encodes it as the plugin reads depth.
