@@ -36,7 +36,10 @@ TEST_F(FrameLayout, FrameMatchesGpuFrame) {
                    {"viewport", offsetof(GpuFrame, viewport)},
                    {"ambient", offsetof(GpuFrame, ambient)},
                    {"background", offsetof(GpuFrame, background)},
-                   {"counts", offsetof(GpuFrame, counts)}});
+                   {"counts", offsetof(GpuFrame, counts)},
+                   {"fogColor", offsetof(GpuFrame, fogColor)},
+                   {"fogParams", offsetof(GpuFrame, fogParams)},
+                   {"fogHeight", offsetof(GpuFrame, fogHeight)}});
     EXPECT_EQ(test::blockSize(program(), GL_UNIFORM_BLOCK, "Frame"), static_cast<GLint>(sizeof(GpuFrame)));
 }
 
