@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "commands.h"
-#include "editor/app/editor_app.h"
+#include "editor/window/editor_app.h"
 #include "nimbus/base/error.h"
 #include "session.h"
 

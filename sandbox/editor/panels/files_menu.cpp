@@ -5,8 +5,8 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "app/recent_files.h"
-#include "app/viewport_panel.h"
+#include "services/recent_files.h"
+#include "viewport_panel.h"
 #include "nimbus/base/error.h"
 #include "panels.h"
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "editor_state.h"
-#include "field_widgets.h"
+#include "panels/field_widgets.h"
 
 namespace nimbus::sandbox::editor {
 

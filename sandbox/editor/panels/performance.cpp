@@ -3,8 +3,8 @@
 // reference snapshot with its error against the real-time frame.
 #include <imgui.h>
 
-#include "app/reference_snapshot.h"
-#include "app/viewport_panel.h"
+#include "services/reference_snapshot.h"
+#include "viewport_panel.h"
 #include "nimbus/base/error.h"
 #include "nimbus/gpu/pass_timer.h"
 #include "nimbus/media/ecs/media_plugin.h"

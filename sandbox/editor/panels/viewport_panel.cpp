@@ -11,7 +11,7 @@
 #include "nimbus/base/error.h"
 #include "nimbus/render/render_plugin.h"
 #include "nimbus/scene/components.h"
-#include "scene_overlays.h"
+#include "services/scene_overlays.h"
 #include "viewport/picking.h"
 
 namespace nimbus::sandbox::editor {

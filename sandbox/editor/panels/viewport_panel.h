@@ -14,8 +14,8 @@
 #include "editor_state.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/pass_timer.h"
-#include "reference_snapshot.h"
-#include "viewport_display.h"
+#include "services/reference_snapshot.h"
+#include "services/viewport_display.h"
 #include "viewport/gizmo.h"
 #include "viewport/orbit_camera.h"
 

@@ -14,10 +14,10 @@
 #include "editor_state.h"
 #include "nimbus/gpu/context.h"
 #include "panels/panels.h"
-#include "recent_files.h"
-#include "reference_snapshot.h"
+#include "panels/viewport_panel.h"
+#include "services/recent_files.h"
+#include "services/reference_snapshot.h"
 #include "script.h"
-#include "viewport_panel.h"
 
 namespace nimbus::sandbox::editor {
 
