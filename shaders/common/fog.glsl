@@ -43,5 +43,19 @@ float fogFactor(vec3 origin, vec3 dir, float z) {
 
 vec3 fogSeen(vec3 radiance, float f) { return f * radiance + (1.0 - f) * frame.fogColor.rgb; }
 
+// f for what lies at `p` (frame-relative), along the camera ray through it; 1 without fog. The
+// media evaluate it once per particle or block in their vertex shaders: llvmpipe would run a
+// per-fragment fog branch under a mask even with fog off.
+float fogAtPoint(vec3 p) {
+    if (!fogEnabled()) return 1.0;
+    vec3 forward = frame.cameraForward.xyz;
+    if (frameOrthographic()) {
+        float z = dot(p, forward);
+        return fogFactor(p - forward * z, forward, z);
+    }
+    float z = length(p);
+    return fogFactor(vec3(0.0), z > 0.0 ? p / z : forward, z);
+}
+
 // How far rays that hit nothing see fog.
 float fogBackgroundDistance() { return frame.fogHeight.y; }

@@ -180,11 +180,31 @@ def explosion():
     return b
 
 
+def fog_smoke():
+    """Issue 27: a smoke plume in height fog: the fog lies in the valley, the plume rises out of it."""
+    b = Builder()
+    b.environment(background=[0.5, 0.58, 0.72], ambient=[0.12, 0.13, 0.16])
+    b.root_ext["fog"] = {"mode": "height", "color": [0.62, 0.66, 0.74], "density": 0.035, "base": 0.0, "falloff": 0.5}
+    ground = b.material("ground", (0.45, 0.47, 0.4))
+    stone = b.material("stone", (0.6, 0.58, 0.55))
+    b.node("ground", mesh=b.plane_mesh("ground", 80, 80, ground))
+    for i, (x, z, h) in enumerate([(-6, -8, 5.0), (7, -14, 7.0), (-12, -22, 9.0), (4, -30, 6.0)]):
+        b.node("rock_%d" % i, translation=(x, h / 2, z), mesh=b.box_mesh("rock_%d" % i, (3.0, h, 3.0), stone))
+    b.node("plume", translation=(0.5, 0.05, -4.0),
+           ext={"medium": {"extinction": 5.0, "albedo": [0.75, 0.75, 0.75], "g": 0.3},
+                "emitter": {"preset": "smoke", "seed": 11, "rate": 26, "max_particles": 500,
+                            "shape": {"type": "disc", "radius": 0.4},
+                            "velocity": [0.0, 1.0, 0.0], "wind": [0.3, 0.0, 0.0]}})
+    b.sun("sun", direction=(0.5, -0.55, -0.65), intensity=3.0)
+    b.camera("main", eye=(3.0, 2.2, 12.0), target=(0.5, 3.2, -6.0), yfov=0.8)
+    return b
+
+
 SCENES = {"demo": demo, "cloud": cloud, "cumulus": cumulus, "cumulus_aircraft": cumulus_aircraft, "smoke": smoke, "campfire": campfire,
-          "jet": jet, "explosion": explosion}
+          "jet": jet, "explosion": explosion, "fog_smoke": fog_smoke}
 
 # Times at which the scenes are rendered for tests and the demo (emitters need time to fill).
-TIMES = {"smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8}
+TIMES = {"smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8, "fog_smoke": 8.0}
 
 if __name__ == "__main__":
     wanted = sys.argv[1:] or list(SCENES)

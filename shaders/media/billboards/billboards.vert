@@ -34,7 +34,7 @@ void main() {
         scattered += phaseValue(particle.extra.x, particle.emissionG.w, s.toLight, toCentre) * s.irradiance;
     } while (++i < frame.counts.x);
     vSource = vec4(particle.albedoSigma.rgb * scattered + particle.emissionG.rgb, particle.albedoSigma.w * pr.w);
-    if (fogEnabled()) vSource.rgb = fogSeen(vSource.rgb, fogFactor(origin, toCentre, dot(pr.xyz - origin, toCentre)));
+    vSource.rgb = fogSeen(vSource.rgb, fogAtPoint(pr.xyz));
     vDepthRadius = vec2(dot(pr.xyz, frame.cameraForward.xyz), pr.w);
     Billboard b = billboardOf(pr.xyz, pr.w);
     gl_Position = b.coversScreen ? vec4(corner, 0.5, 1.0) : frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);

@@ -7,7 +7,6 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
-#include "common/fog.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
 #include "media/common/slices.glsl"
@@ -35,6 +34,7 @@ layout(location = 3) uniform int uSeamPart;
 layout(location = 5) uniform int uSeamCell;  // media texels per seam mask texel, per axis
 
 flat in ivec2 vBlock;  // x: the block, y: its rank in the back-to-front order
+flat in float vFog;     // the fog factor at the block's centre (common/fog.glsl)
 
 // The seam stencil is only read (block_composite_pass.cpp), so testing it before shading changes
 // nothing but the cost: a texel of the other part is never shaded.
@@ -118,6 +118,6 @@ void main() {
 #else
     source = blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer, BLOCK_SHADING_PIECES, false);
 #endif
-    if (fogEnabled()) source = fogSeen(source, fogFactor(origin, dir, clamp(profile.mean, 0.0, tSurface)));  // at the block's mass centre
+    source = mix(frame.fogColor.rgb, source, vFog);
     outColor = vec4(source * alpha, alpha);
 }

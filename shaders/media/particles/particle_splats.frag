@@ -7,7 +7,6 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
-#include "common/fog.glsl"
 #include "common/lights.glsl"
 #include "media/common/optics.glsl"
 #include "media/common/kernel_table.glsl"
@@ -24,6 +23,7 @@ layout(location = 1) uniform vec2 uFullResScale;
 
 flat in vec4 vCentreRadius;
 flat in float vSigma;
+flat in float vFog;  // the fog factor at the centre (common/fog.glsl)
 #ifdef SPLAT_CONSTANT
 flat in vec4 vSource;
 #else
@@ -122,6 +122,6 @@ void main() {
         source += vAlbedo * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, beta, alpha, p);
     } while (++k < MAX_FRAGMENT_LAMPS && uFragmentLamps[min(k, MAX_FRAGMENT_LAMPS - 1)] >= 0);
 #endif
-    if (fogEnabled()) source = fogSeen(source, fogFactor(origin, dir, clamp(tc, 0.0, tSurface)));  // at the closest approach
+    source = mix(frame.fogColor.rgb, source, vFog);
     outColor = vec4(source * alpha, alpha);
 }

@@ -5,6 +5,7 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
+#include "common/fog.glsl"
 #include "media/common/particle_data.glsl"
 #include "media/common/billboard.glsl"
 
@@ -14,6 +15,7 @@ layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) readonly buffer ParticleL
 
 flat out vec4 vCentreRadius;  // origin-relative centre, radius
 flat out float vSigma;
+flat out float vFog;           // the fog factor at the centre (common/fog.glsl)
 #ifdef SPLAT_CONSTANT
 flat out vec4 vSource;        // F0
 #else
@@ -34,6 +36,7 @@ void main() {
     int index = int(drawOrder[rank]);
     GpuParticle particle = particles[index];
     vec4 pr = particle.positionRadius;
+    vFog = fogAtPoint(pr.xyz);
     vCentreRadius = pr;
     vSigma = particle.albedoSigma.w;
     vPhase = vec2(particle.extra.x, particle.emissionG.w);

@@ -6,7 +6,6 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
-#include "common/fog.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
 #include "media/common/slices.glsl"
@@ -19,6 +18,7 @@ layout(location = 0) uniform int uSoftParticles;
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
 
 flat in ivec2 vParticle;  // x: index, y: draw rank
+flat in float vFog;        // the fog factor at the particle's centre (common/fog.glsl)
 
 layout(location = 0) out vec4 outColor;
 
@@ -48,6 +48,6 @@ void main() {
     float lo = max(u0, -chord.halfChord), hi = min(u1, chord.halfChord);
     LayerOrder layer = LayerOrder(vParticle.x, vParticle.y, tEnd, uSoftParticles != 0 ? 1e30 : tSurface);
     vec3 source = segmentSource(origin, dir, chord, radius, lo, hi, chordShadingPoint(chord, radius, u0, u1, tau), tau, particle, layer);
-    if (fogEnabled()) source = fogSeen(source, fogFactor(origin, dir, chord.tClosest + 0.5 * (lo + hi)));  // at the segment's middle
+    source = mix(frame.fogColor.rgb, source, vFog);
     outColor = vec4(source * alpha, alpha);
 }

@@ -4,6 +4,7 @@
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
+#include "common/fog.glsl"
 #include "media/common/particle_data.glsl"
 
 layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
@@ -11,6 +12,7 @@ layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { u
 // x: the particle's index, y: its place in the draw order. One varying, not two: llvmpipe keeps
 // setup data per varying per triangle, which a second one would add for every particle.
 flat out ivec2 vParticle;
+flat out float vFog;
 
 const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
 
@@ -18,6 +20,7 @@ void main() {
     int index = int(drawOrder[gl_InstanceID]);
     vParticle = ivec2(index, gl_InstanceID);
     vec4 pr = particles[index].positionRadius;
+    vFog = fogAtPoint(pr.xyz);
     vec2 corner = kCorners[gl_VertexID];
     vec3 c = (frame.viewMatrix * vec4(pr.xyz, 1.0)).xyz;
     if (frameOrthographic()) {

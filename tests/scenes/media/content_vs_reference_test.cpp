@@ -71,7 +71,9 @@ INSTANTIATE_TEST_SUITE_P(
         ContentCase{"cloud", 0.0, 0.0110, 0.017, 0.017, 0.03},
         // 8000 particles; the second with an airliner inside the cloud.
         ContentCase{"cumulus", 0.0, 0.0008, 0.0014, 0.0014, 0.03},
-        ContentCase{"cumulus_aircraft", 0.0, 0.0019, 0.0038, 0.0038, 0.03}),
+        ContentCase{"cumulus_aircraft", 0.0, 0.0019, 0.0038, 0.0038, 0.03},
+        // A smoke plume in height fog: every particle fogged at one distance, the reference at every sample.
+        ContentCase{"fog_smoke", 8.0, 0.0072, 0.011, 0.011, 0.03}),
     [](const ::testing::TestParamInfo<ContentCase>& param) { return std::string(param.param.scene); });
 
 }  // namespace
