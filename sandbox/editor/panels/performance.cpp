@@ -44,7 +44,7 @@ void selectors(EditorState& state, std::optional<std::string>& error) {
     combo("quality", state.view().quality, {"fast", "balanced", "exact"}, [&](const char* q) { state.setQuality(q); });
     ImGui::SameLine();
     ImGui::SetNextItemWidth(140);
-    combo("mode", state.view().mode, {"particles", "blocks", "billboards"}, [&](const char* m) { state.setMode(m); });
+    combo("mode", state.view().mode, {"particles", "blocks", "raymarch", "billboards"}, [&](const char* m) { state.setMode(m); });
 }
 
 void referenceSection(EditorState& state, const ReferenceSnapshot& snapshot, PerformanceRequest& request) {

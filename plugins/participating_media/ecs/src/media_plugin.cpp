@@ -165,6 +165,8 @@ MediaRenderSettings readMediaSettings(const Settings* settings) {
     else if (auto v = settings->number("media_scale", 0.0625, 1.0)) s.mediaScale = static_cast<float>(*v);
     if (auto v = settings->number("upsample_threshold", 1e-4, 10.0)) s.upsampleThreshold = static_cast<float>(*v);
     if (auto v = settings->boolean("instancing")) s.instancing = *v;
+    if (auto v = settings->integer("voxels", 4, 256)) s.voxels = static_cast<int>(*v);
+    if (auto v = settings->integer("raymarch_steps", 4, 4096)) s.raymarchSteps = static_cast<int>(*v);
     if (auto v = settings->text("block_shading")) {
         if (*v == "smooth") s.blockShading = BlockShading::Smooth;
         else if (*v == "seam") s.blockShading = BlockShading::Seam;
@@ -207,7 +209,7 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("quality", "fast, balanced or exact (the library's default; sandbox render's is balanced): the settings each picks are in docs/PERFORMANCE.md");
     for (const QualityPreset& preset : kQualityPresets)
         settings.definePreset("quality", preset.name, {preset.settings.begin(), preset.settings.end()});
-    settings.declare("mode", "media mode: particles (default), blocks, or billboards (the game-industry yardstick: flat, unshadowed sprites)");
+    settings.declare("mode", "media mode: particles (default), blocks, raymarch (a voxel grid ray-marched per pixel), or billboards (the game-industry yardstick: flat, unshadowed sprites)");
     settings.declare("slices", "light slices per light view, 4..32 (default: chosen from the medium)");
     settings.declare("slice_resolution", "texels per side of a light slice, or auto (chosen from the particles' size as the light sees them; see slice_detail); default 256");
     settings.declare("lighting", "particles mode: where light is evaluated: fragment (default, exact), particle (per particle, linear across it) or particle_exact");
@@ -220,6 +222,8 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
     settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25, or auto (where the particles cover the image more than 2.5 times over, 1/4 to 1/2 keeping 8 texels across a typical billboard); default 1");
     settings.declare("instancing", "blocks mode: build the cloud from one block prototype instanced at every block (default off)");
+    settings.declare("voxels", "raymarch mode: voxels along the grid's longest side, 4..256 (default: a voxel per third of the small particles' radius, at most 96)");
+    settings.declare("raymarch_steps", "raymarch mode: most samples per ray, 4..4096 (default 128)");
     settings.declare("block_shading", "blocks mode, where a mesh is seen in the medium: seam (default: blocks shaded from their particles with the compositing order corrected near the mesh), smooth (faster there, but the mesh can show a seam) or exact (as seam over those blocks' whole rectangles; slowest)");
     settings.declare("upsample_threshold", "offscreen media: relative depth difference treated as an edge (default 0.2)");
     app.resource<scene::SceneSpawners>().add("media", spawnMedia);

@@ -103,6 +103,11 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
 
     const gpu::Program splats = gpu::compileProgram(particleSplatDesc(false, true, false));
     EXPECT_EQ(samplerUnit(splats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));
+    const gpu::Program raymarch = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/raymarch/raymarch.frag"});
+    EXPECT_EQ(samplerUnit(raymarch.id(), "uScattering"), static_cast<GLint>(kVoxelScatteringUnit));
+    EXPECT_EQ(samplerUnit(raymarch.id(), "uEmission"), static_cast<GLint>(kVoxelEmissionUnit));
+    EXPECT_EQ(samplerUnit(raymarch.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
+    EXPECT_EQ(samplerUnit(raymarch.id(), "mediaSlices"), static_cast<GLint>(kSlicesUnit));
     const gpu::Program lamps = gpu::compileProgram(LocalLightPrograms::withLocalLights(particlesDesc(true)));
     EXPECT_EQ(storageBinding(lamps.id(), "LampNeighbourhoods"), static_cast<GLint>(kLampNeighbourhoodBinding));
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "common/lit_media_inputs.h"
 #include "common/frame_blocks.h"
 #include "nimbus/media/gpu_bindings.h"
 #include "nimbus/gpu/frame_layout.h"
@@ -35,8 +36,8 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
                                                const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
                                                bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                                const MediaTarget& target) {
-    struct Composite {
-        gpu::ResourceHandle media, depth, shadowMap, slices, depths, sums1, sums2, moments, seamMask, seamStencil;
+    struct Composite : LitMediaInputs {
+        gpu::ResourceHandle depths, sums1, sums2, moments, seamMask, seamStencil;
     };
     const int w = target.size.x, h = target.size.y;
     // Runs of consecutive ranks that want the same build, drawn in order.
@@ -91,10 +92,7 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
     const auto& data = graph.addPass<Composite>(
         "media_blocks",
         [&](gpu::PassBuilder& builder, Composite& d) {
-            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
-            d.depth = builder.read(context.sceneDepth);
-            if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
-            if (context.slices.valid()) d.slices = builder.read(context.slices);
+            declareLitMediaInputs(builder, context, target, d);
             d.depths = builder.read(made.depths);
             d.sums1 = builder.read(made.sums1);
             d.sums2 = builder.read(made.sums2);
@@ -123,9 +121,7 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
             blocks.bind(0);
             particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
             particles.bindLampNeighbourhoods();
-            glBindTextureUnit(kSceneDepthUnit, r.id(d.depth));
-            if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, r.id(d.shadowMap));
-            if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, r.id(d.slices));
+            bindLitMediaInputs(r, d);
             glBindTextureUnit(kImpostorDepthsUnit, r.id(d.depths));
             glBindTextureUnit(kImpostorSums1Unit, r.id(d.sums1));
             glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));

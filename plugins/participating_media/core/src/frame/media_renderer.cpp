@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "raymarch/raymarch_pass.h"
+#include "raymarch/voxel_grid.h"
 #include "billboards/billboard_pass.h"
 #include "blocks/block_composite_pass.h"
 #include "blocks/block_impostor_pass.h"
@@ -51,7 +53,8 @@ MediaMode parseMediaMode(const std::string& text, const std::string& origin) {
     if (text == "particles") return MediaMode::Particles;
     if (text == "blocks") return MediaMode::Blocks;
     if (text == "billboards") return MediaMode::Billboards;
-    throwInputError(origin, text, "", "unknown media mode (known: particles, blocks, billboards)");
+    if (text == "raymarch") return MediaMode::Raymarch;
+    throwInputError(origin, text, "", "unknown media mode (known: particles, blocks, billboards, raymarch)");
 }
 
 const char* mediaModeName(MediaMode mode) {
@@ -59,6 +62,7 @@ const char* mediaModeName(MediaMode mode) {
         case MediaMode::Particles: return "particles";
         case MediaMode::Blocks: return "blocks";
         case MediaMode::Billboards: return "billboards";
+        case MediaMode::Raymarch: return "raymarch";
     }
     return "unknown";
 }
@@ -391,6 +395,11 @@ void MediaRenderer::addMedia(gpu::FrameGraph& graph, GraphFrame& context) {
     } else if (settings_.mode == MediaMode::Billboards) {
         if (!billboardPass_) billboardPass_ = std::make_unique<BillboardPass>();
         media = billboardPass_->add(graph, context, *buffer_, target);
+    } else if (settings_.mode == MediaMode::Raymarch) {
+        if (!raymarchPass_) raymarchPass_ = std::make_unique<RaymarchPass>();
+        const VoxelGrid grid = voxelize(*particles_, settings_.voxels);
+        stats_.voxels = grid.size;
+        media = raymarchPass_->add(graph, context, grid, settings_.raymarchSteps > 0 ? settings_.raymarchSteps : kDefaultRaymarchSteps, target);
     } else if (settings_.lighting != ParticleLighting::Fragment &&
                !(settings_.exactNearLamps && lampInsideMedium(*particles_, context.host.lights))) {
         if (!lightingPass_) lightingPass_ = std::make_unique<ParticleLightingPass>();

@@ -4,6 +4,7 @@
 #include "particles/particle_pass.h"
 
 #include "common/frame_blocks.h"
+#include "common/lit_media_inputs.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 
@@ -20,9 +21,7 @@ gpu::ProgramDesc particlesDesc(bool layerLight) {
 
 gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& context,
                                          const ParticleGpuBuffer& buffer, ParticleShading shading, const MediaTarget& target) {
-    struct Data {
-        gpu::ResourceHandle media, depth, shadowMap, slices;
-    };
+    struct Data : LitMediaInputs {};
     const int w = target.size.x, h = target.size.y;
     if (!shading.layerLight && !pointLight_)
         pointLight_ = std::make_unique<LocalLightPrograms>(particlesDesc(false));
@@ -30,10 +29,7 @@ gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& contex
     const auto& data = graph.addPass<Data>(
         "media_particles",
         [&](gpu::PassBuilder& builder, Data& d) {
-            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
-            d.depth = builder.read(context.sceneDepth);
-            if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
-            if (context.slices.valid()) d.slices = builder.read(context.slices);
+            declareLitMediaInputs(builder, context, target, d);
         },
         [this, &program, &context, &buffer, shading, w, h, scale = target.fullResScale](const gpu::PassResources& resources,
                                                                                   const Data& d) {
@@ -50,9 +46,7 @@ gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& contex
             buffer.bindParticles();
             buffer.bindOrder();
             buffer.bindLampNeighbourhoods();
-            glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
-            if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
-            if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
+            bindLitMediaInputs(resources, d);
             glProgramUniform1i(program.id(), 0, shading.softParticles ? 1 : 0);
             glProgramUniform2f(program.id(), 1, scale.x, scale.y);
             glDisable(GL_DEPTH_TEST);  // the fragment shader clips against scene depth itself

@@ -23,7 +23,9 @@ namespace nimbus::media {
 
 // `billboards` is the yardstick a typical engine ships (lit sprites, no volumetric shadows): a
 // measured baseline for `sandbox bench`, not a feature to tune.
-enum class MediaMode { Particles, Blocks, Billboards };
+// `raymarch` (seed 002) voxelises the particles and ray-marches the grid per pixel.
+enum class MediaMode { Particles, Blocks, Billboards, Raymarch };
+inline constexpr int kDefaultRaymarchSteps = 128;
 
 // How blocks mode shades the blocks where a mesh is seen inside the medium (planning/block_classification.h
 // blocksShadedExactly): exactly is at up to 16 points placed by their own particles, with the
@@ -45,7 +47,7 @@ enum class ParticleLighting : std::uint8_t {
     ParticleExact,  // as Particle, each ray shaded as Fragment shades a pixel
 };
 
-// Parses "particles", "blocks" or "billboards"; throws InputError naming the option for anything else.
+// Parses "particles", "blocks", "billboards" or "raymarch"; throws InputError naming the option for anything else.
 MediaMode parseMediaMode(const std::string& text, const std::string& origin = "--mode");
 const char* mediaModeName(MediaMode mode);
 
@@ -73,6 +75,8 @@ struct MediaRenderSettings {
     float impostorScale = 0.0f;  // blocks mode: impostor texels per covered pixel; 0: 0.5
     bool instancing = false;   // blocks mode: one block prototype instanced at every block (seed 000 §2's b + N/b)
     BlockShading blockShading = BlockShading::Seam;  // blocks mode: where a mesh is seen in the medium
+    int voxels = 0;            // raymarch mode: voxels along the grid's longest side; 0: from the particle size
+    int raymarchSteps = 0;     // raymarch mode: most samples per ray; 0: kDefaultRaymarchSteps
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     bool mediaScaleAuto = false;  // automaticMediaScale: ½ to ¼ where the particles cover the image more than kHalfScaleCoverage times
                                   // over (the half-resolution pass then pays for its upsampling) and no
@@ -95,6 +99,7 @@ struct MediaFrameStats {
     int exactlyShadedBlocks = 0;         // blocks mode: blocks shaded exactly where a mesh is seen in the medium
                                          // (block_shading=seam: near the seam only)
     glm::ivec2 impostorAtlas{0};  // blocks mode: the camera's impostor atlas size
+    glm::ivec3 voxels{0};         // raymarch mode: the grid's size
     float mediaScale = 1.0f;      // the media target's resolution relative to the frame, this frame
     bool exactLighting = false;   // particles mode: shaded per fragment this frame (exactNearLamps included)
     bool constantSource = false;  // per-particle lighting from one ray per particle (kConstantSplatPixels)
@@ -115,6 +120,7 @@ class SplatFloor;
 class FrameBlocks;
 struct ImmediateFrame;
 class BillboardPass;
+class RaymarchPass;
 class LightSlicePrefixPass;
 class ParticleSplatPass;
 struct BlockFrame;
@@ -188,6 +194,7 @@ private:
     std::unique_ptr<MediaDepthUsedPass> depthUsedPass_;
     std::unique_ptr<SplatFloor> splatFloor_;
     std::unique_ptr<BillboardPass> billboardPass_;
+    std::unique_ptr<RaymarchPass> raymarchPass_;
 };
 
 // The particles' billboards on screen, estimated on the CPU: how many times over they cover the

@@ -1,0 +1,20 @@
+#include "common/lit_media_inputs.h"
+
+#include "nimbus/media/gpu_bindings.h"
+
+namespace nimbus::media {
+
+void declareLitMediaInputs(gpu::PassBuilder& builder, const GraphFrame& context, const MediaTarget& target, LitMediaInputs& d) {
+    d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, target.size.x, target.size.y, 1, 1});
+    d.depth = builder.read(context.sceneDepth);
+    if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+    if (context.slices.valid()) d.slices = builder.read(context.slices);
+}
+
+void bindLitMediaInputs(const gpu::PassResources& resources, const LitMediaInputs& d) {
+    glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
+    if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
+    if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,29 @@
+#pragma once
+// The `raymarch` pass (seed 002; shaders/media/raymarch/raymarch.*): the voxel grid marched per
+// pixel of the media target from a jittered start, up to the scene depth, until the view
+// transmittance is spent. Light comes from the light slices and the mesh shadow maps.
+#include "common/media_target.h"
+#include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/gpu/shader_program.h"
+#include "nimbus/media/graph_frame.h"
+#include "raymarch/voxel_grid.h"
+
+namespace nimbus::media {
+
+class RaymarchPass {
+public:
+    RaymarchPass();
+    // Uploads `grid` (whose corner is world space; the frame origin is the camera's) and adds the pass.
+    gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const VoxelGrid& grid, int maxSteps,
+                            const MediaTarget& target);
+
+private:
+    void upload(const VoxelGrid& grid);
+
+    gpu::Program program_;
+    gpu::Texture scattering_, emission_;
+    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+};
+
+}  // namespace nimbus::media
