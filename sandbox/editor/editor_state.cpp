@@ -127,25 +127,27 @@ void EditorState::reparentSelected(int parent) {
     apply("reparent " + nodeLabel(json(), node), [&](Json& root) { reparentNode(root, node, parent); }, node);
 }
 
+// The step's state is loaded before the history moves, so a step that no longer loads (the view
+// settings changed since) leaves everything where it was.
 bool EditorState::undo() {
-    const HistoryStep* step = history_.undo();
-    if (!step) return false;
+    if (!history_.canUndo()) return false;
     Document previous = document_;
-    previous.json() = step->before;
-    replaceSession(buildSession(previous, time_, view_));
+    previous.json() = history_.peekUndo().before;
+    auto session = buildSession(previous, time_, view_);
+    selected_ = history_.undo()->selectionBefore;
     document_ = std::move(previous);
-    selected_ = step->selectionBefore;
+    replaceSession(std::move(session));
     return true;
 }
 
 bool EditorState::redo() {
-    const HistoryStep* step = history_.redo();
-    if (!step) return false;
+    if (!history_.canRedo()) return false;
     Document next = document_;
-    next.json() = step->after;
-    replaceSession(buildSession(next, time_, view_));
+    next.json() = history_.peekRedo().after;
+    auto session = buildSession(next, time_, view_);
+    selected_ = history_.redo()->selectionAfter;
     document_ = std::move(next);
-    selected_ = step->selectionAfter;
+    replaceSession(std::move(session));
     return true;
 }
 

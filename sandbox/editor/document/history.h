@@ -22,6 +22,8 @@ public:
     void push(HistoryStep step);  // drops the steps that were undone
     const HistoryStep* undo();    // the step to revert, or nullptr
     const HistoryStep* redo();    // the step to apply again, or nullptr
+    const HistoryStep& peekUndo() const { return steps_[position_ - 1]; }  // needs canUndo()
+    const HistoryStep& peekRedo() const { return steps_[position_]; }      // needs canRedo()
     bool canUndo() const { return position_ > 0; }
     bool canRedo() const { return position_ < steps_.size(); }
     std::string undoLabel() const { return canUndo() ? steps_[position_ - 1].label : ""; }

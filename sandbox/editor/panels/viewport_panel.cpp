@@ -150,11 +150,13 @@ void ViewportPanel::uploadHeat(const assets::RgbImage& heat) {
 }
 
 std::optional<std::string> ViewportPanel::draw(EditorState& state, ReferenceSnapshot& snapshot) {
-    ImGui::RadioButton("Move (W)", reinterpret_cast<int*>(&gizmoMode), static_cast<int>(GizmoMode::Translate));
+    int mode = static_cast<int>(gizmoMode);
+    ImGui::RadioButton("Move (W)", &mode, static_cast<int>(GizmoMode::Translate));
     ImGui::SameLine();
-    ImGui::RadioButton("Rotate (E)", reinterpret_cast<int*>(&gizmoMode), static_cast<int>(GizmoMode::Rotate));
+    ImGui::RadioButton("Rotate (E)", &mode, static_cast<int>(GizmoMode::Rotate));
     ImGui::SameLine();
-    ImGui::RadioButton("Scale (R)", reinterpret_cast<int*>(&gizmoMode), static_cast<int>(GizmoMode::Scale));
+    ImGui::RadioButton("Scale (R)", &mode, static_cast<int>(GizmoMode::Scale));
+    gizmoMode = static_cast<GizmoMode>(mode);
     ImGui::SameLine();
     ImGui::Checkbox("Bounds", &showBounds);
     ImGui::SameLine();
