@@ -5,14 +5,12 @@
 #include "billboards/billboard_pass.h"
 
 #include "common/kernel_table.h"
+#include "common/lit_media_inputs.h"
 #include "common/frame_blocks.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 
 namespace nimbus::media {
-
-namespace {
-}
 
 BillboardPass::BillboardPass()
     : program_(gpu::compileProgram({.vertex = "media/billboards/billboards.vert", .fragment = "media/billboards/billboards.frag"})),
@@ -31,13 +29,7 @@ gpu::ResourceHandle BillboardPass::add(gpu::FrameGraph& graph, GraphFrame& conte
             d.depth = builder.read(context.sceneDepth);
         },
         [this, &context, &buffer, w, h, scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
-            gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
-            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            glViewport(0, 0, w, h);
-            const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // no radiance, full transmittance
-            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+            const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
             glUseProgram(program_.id());
             context.blocks->bind();
             buffer.bindParticles();
@@ -45,11 +37,7 @@ gpu::ResourceHandle BillboardPass::add(gpu::FrameGraph& graph, GraphFrame& conte
             glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_CULL_FACE);
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            blendPremultipliedOver();
             glBindVertexArray(vertexArray_.id());
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
             glBindVertexArray(0);

@@ -104,15 +104,9 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
         },
         [this, draws, &context, &blocks, &particles, w, h, seamCell, scale = target.fullResScale](const gpu::PassResources& r,
                                                                                                  const Composite& d) {
-            gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
-            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            const gpu::Framebuffer fbo = bindClearedMediaTarget(r.id(d.media), {w, h});
             // Read only: a seam run's draws test it (stencil 1: near the seam), write nothing to it.
             if (d.seamStencil.valid()) glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, r.id(d.seamStencil), 0);
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            glViewport(0, 0, w, h);
-            const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
             for (const Draw& draw : draws) {
                 glProgramUniform2f(draw.program->id(), 1, scale.x, scale.y);
                 glProgramUniform1i(draw.program->id(), kSeamCellLocation, seamCell);
@@ -127,11 +121,7 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
             glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));
             glBindTextureUnit(kImpostorMomentsUnit, r.id(d.moments));
             if (d.seamMask.valid()) glBindTextureUnit(kSeamMaskUnit, r.id(d.seamMask));
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_CULL_FACE);
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            blendPremultipliedOver();
             glBindVertexArray(vertexArray_.id());
             for (const Draw& draw : draws) {
                 const GLuint program = draw.program->id();

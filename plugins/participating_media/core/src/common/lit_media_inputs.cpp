@@ -17,4 +17,23 @@ void bindLitMediaInputs(const gpu::PassResources& resources, const LitMediaInput
     if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
 }
 
+gpu::Framebuffer bindClearedMediaTarget(GLuint texture, glm::ivec2 size) {
+    gpu::Framebuffer fbo = gpu::createFramebuffer();
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, texture, 0);
+    glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(0, 0, size.x, size.y);
+    const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // no radiance, full transmittance
+    glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+    return fbo;
+}
+
+void blendPremultipliedOver() {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+}
+
 }  // namespace nimbus::media

@@ -1,7 +1,9 @@
 #pragma once
-// What every mode pass that lights the medium itself declares and binds: the media target it
-// writes, the scene depth it stops at, and the mesh shadow map and light slices it lights with.
+// What the mode passes share: the media target they write (cleared to no radiance and full
+// transmittance, then blended premultiplied back to front), the scene depth they stop at, and the
+// mesh shadow map and light slices they light with.
 #include "common/media_target.h"
+#include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/media/graph_frame.h"
 
@@ -15,5 +17,11 @@ struct LitMediaInputs {
 void declareLitMediaInputs(gpu::PassBuilder& builder, const GraphFrame& context, const MediaTarget& target, LitMediaInputs& d);
 // In its execution: binds depth, shadow map and slices at their units (gpu_bindings.h).
 void bindLitMediaInputs(const gpu::PassResources& resources, const LitMediaInputs& d);
+
+// Binds a framebuffer on the media target `texture` with the viewport on it, cleared to (0, 0, 0, 1).
+gpu::Framebuffer bindClearedMediaTarget(GLuint texture, glm::ivec2 size);
+// Premultiplied "over" with alpha as the product of (1 − α): rgb = src + (1 − α)·dst, a = (1 − α)·a;
+// no depth test or culling (the shaders clip against the scene depth themselves).
+void blendPremultipliedOver();
 
 }  // namespace nimbus::media

@@ -33,13 +33,7 @@ gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& contex
         },
         [this, &program, &context, &buffer, shading, w, h, scale = target.fullResScale](const gpu::PassResources& resources,
                                                                                   const Data& d) {
-            gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
-            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            glViewport(0, 0, w, h);
-            const float clear[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // no radiance, full transmittance
-            glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, clear);
+            const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
 
             glUseProgram(program.id());
             context.blocks->bind();
@@ -49,11 +43,7 @@ gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& contex
             bindLitMediaInputs(resources, d);
             glProgramUniform1i(program.id(), 0, shading.softParticles ? 1 : 0);
             glProgramUniform2f(program.id(), 1, scale.x, scale.y);
-            glDisable(GL_DEPTH_TEST);  // the fragment shader clips against scene depth itself
-            glDisable(GL_CULL_FACE);
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+            blendPremultipliedOver();
             glBindVertexArray(vertexArray_.id());
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
             glBindVertexArray(0);
