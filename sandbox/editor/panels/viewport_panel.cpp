@@ -74,7 +74,7 @@ void ViewportPanel::useFreeCamera(EditorState& state) {
 void ViewportPanel::frameSelection(EditorState& state) {
     useFreeCamera(state);
     Aabb box;
-    for (const NodeOverlay& o : collectOverlays(state.session()))
+    for (const NodeOverlay& o : overlays(state))
         if (state.selected() < 0 || o.node == state.selected()) {
             box.extend(o.box);
             box.extend(o.position);
@@ -83,6 +83,15 @@ void ViewportPanel::frameSelection(EditorState& state) {
     orbit_.frame(box);
     freeResolved_ = orbit_.resolved();
     freeChanged_ = true;
+}
+
+// Bounds and icons change only with what the viewport shows: gathered once per revision, not per UI frame.
+const std::vector<NodeOverlay>& ViewportPanel::overlays(EditorState& state) {
+    if (overlaysRevision_ != state.revision()) {
+        overlays_ = collectOverlays(state.session());
+        overlaysRevision_ = state.revision();
+    }
+    return overlays_;
 }
 
 glm::dvec3 ViewportPanel::pointAhead(EditorState& state, double distance) const {
@@ -238,7 +247,7 @@ void ViewportPanel::drawOverlays(EditorState& state, glm::dvec2 origin) {
     if (!showBounds) return;
     const assets::ResolvedCamera camera = shownCamera(state);
     ImDrawList* list = ImGui::GetWindowDrawList();
-    for (const NodeOverlay& o : collectOverlays(state.session())) {
+    for (const NodeOverlay& o : overlays(state)) {
         const bool selected = o.node == state.selected();
         const unsigned colour = selected ? IM_COL32(255, 200, 60, 255) : IM_COL32(120, 200, 255, 140);
         if (o.kind == OverlayKind::Media || (selected && o.kind == OverlayKind::Mesh))
@@ -251,7 +260,7 @@ void ViewportPanel::drawOverlays(EditorState& state, glm::dvec2 origin) {
 void ViewportPanel::pickAt(EditorState& state, glm::dvec2 pixel) {
     const assets::ResolvedCamera camera = shownCamera(state);
     std::vector<PickTarget> targets;
-    for (const NodeOverlay& o : collectOverlays(state.session())) {
+    for (const NodeOverlay& o : overlays(state)) {
         PickTarget t{o.node, o.box};
         if (o.kind == OverlayKind::Light || o.kind == OverlayKind::Camera) {
             t.sphere = true;

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -15,6 +16,7 @@
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/pass_timer.h"
 #include "services/reference_snapshot.h"
+#include "services/scene_overlays.h"
 #include "services/viewport_display.h"
 #include "viewport/gizmo.h"
 #include "viewport/orbit_camera.h"
@@ -63,6 +65,7 @@ private:
     std::optional<std::string> handleGizmo(EditorState& state, glm::dvec2 origin, bool& gizmoHovered);
     void drawOverlays(EditorState& state, glm::dvec2 origin);
     void pickAt(EditorState& state, glm::dvec2 pixel);
+    const std::vector<NodeOverlay>& overlays(EditorState& state);
 
     std::optional<glm::ivec2> fixedSize_;
     glm::ivec2 size_{640, 360};
@@ -82,6 +85,8 @@ private:
     OrbitCamera orbit_;
     assets::ResolvedCamera freeResolved_;
     GizmoState gizmo_;
+    std::vector<NodeOverlay> overlays_;
+    std::uint64_t overlaysRevision_ = ~0ull;
     bool freeChanged_ = false;
 };
 

@@ -67,7 +67,7 @@ void EditorApp::initImGui() {
     ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed by the code, not remembered
     ImGui::StyleColorsDark();
     ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(context_->nativeWindow()), true);
-    ImGui_ImplOpenGL3_Init("#version 450 core");
+    ImGui_ImplOpenGL3_Init(nullptr);  // the backend's own GLSL, which Mesa's 4.5 core profile compiles
     glfwSwapInterval(0);  // the viewport's cost is what we measure, not the display's refresh
 }
 
