@@ -9,17 +9,16 @@ namespace nimbus::render {
 
 ComposePass::ComposePass() : clampedNearest_(gpu::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE)) {}
 
-GLuint ComposePass::program(int variant) {
-    auto it = programs_.find(variant);
-    if (it == programs_.end()) {
+const gpu::FullscreenPass& ComposePass::pass(int variant) {
+    auto it = passes_.find(variant);
+    if (it == passes_.end()) {
         std::vector<std::string> defines;
         if (variant & kLayer) defines.push_back("COMPOSE_LAYER");
         if (variant & kUpsample) defines.push_back("COMPOSE_UPSAMPLE");
         if (variant & kFog) defines.push_back("COMPOSE_FOG");
-        it = programs_.emplace(variant, gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "compose.frag", .defines = defines}))
-                 .first;
+        it = passes_.try_emplace(variant, "compose.frag", defines).first;
     }
-    return it->second.id();
+    return it->second;
 }
 
 void ComposePass::add(FrameGraph& graph, FrameContext& context, const gpu::Texture& output) {
@@ -39,17 +38,11 @@ void ComposePass::add(FrameGraph& graph, FrameContext& context, const gpu::Textu
             builder.sideEffect();
         },
         [this, &context, fog, threshold = overlay.edgeThreshold](const PassResources& resources, const Data& d) {
-            gpu::Framebuffer fbo = gpu::createFramebuffer();
             const auto& desc = resources.desc(d.output);
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.output), 0);
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            glViewport(0, 0, desc.width, desc.height);
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_BLEND);
-            glDisable(GL_CULL_FACE);
+            const gpu::Framebuffer fbo = gpu::singleTargetFramebuffer(resources.id(d.output), desc.format);
             const bool upsample = d.depthUsed.valid();
-            const GLuint program = this->program((d.layer.valid() ? kLayer : 0) | (upsample ? kUpsample : 0) | (fog ? kFog : 0));
-            glUseProgram(program);
+            const gpu::FullscreenPass& pass = this->pass((d.layer.valid() ? kLayer : 0) | (upsample ? kUpsample : 0) | (fog ? kFog : 0));
+            const GLuint program = pass.program();
             glBindTextureUnit(0, resources.id(d.color));
             if (d.layer.valid()) glBindTextureUnit(1, resources.id(d.layer));
             if (d.sceneDepth.valid()) {
@@ -64,9 +57,8 @@ void ComposePass::add(FrameGraph& graph, FrameContext& context, const gpu::Textu
                                    static_cast<float>(low.height) / static_cast<float>(desc.height));
                 glProgramUniform1f(program, 2, threshold);
             }
-            triangle_.draw();
+            pass.draw(fbo.id(), {desc.width, desc.height});
             glBindSampler(2, 0);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
 }
 

@@ -58,14 +58,9 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
                 glBindSampler(kShadowMapUnit, shadows.compareSampler_.id());
             }
             for (const auto& [unit, texture] : d.textures) glBindTextureUnit(unit, resources.id(texture));
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_GREATER);
-            glDepthMask(GL_TRUE);
-            glDisable(GL_BLEND);
+            gpu::applyPipeline({.depth = {.test = true, .compare = GL_GREATER, .write = true}});  // reversed Z
             drawInstances(context, programId, {.normalMatrixLocation = 1, .cullSingleSided = true, .bindMaterial = true});
             glBindSampler(kShadowMapUnit, 0);
-            glDisable(GL_CULL_FACE);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     context.sceneColor = data.color;
     context.sceneDepth = data.depth;

@@ -4,7 +4,7 @@
 #include <vector>
 // The engine's own passes (one .cpp and one set of .glsl files each).
 #include "nimbus/gpu/gl_objects.h"
-#include "nimbus/render/fullscreen.h"
+#include "nimbus/gpu/fullscreen_pass.h"
 #include "nimbus/render/scene_renderer.h"
 
 namespace nimbus::render {
@@ -41,11 +41,11 @@ public:
 
 private:
     enum Variant { kLayer = 1, kUpsample = 2, kFog = 4 };
-    GLuint program(int variant);  // compiled on first use
 
-    std::map<int, gpu::Program> programs_;
+    const gpu::FullscreenPass& pass(int variant);  // compiled on first use
+
+    std::map<int, gpu::FullscreenPass> passes_;
     gpu::Sampler clampedNearest_;  // the upsampling gathers depths at the layer's edges
-    FullscreenTriangle triangle_;
 };
 
 // Draws every instance's primitives with uModel (location 0) and, when `normalMatrixLocation` ≥ 0,

@@ -34,13 +34,11 @@ void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glUseProgram(program_.id());
             glViewport(0, 0, size, size);
-            glEnable(GL_DEPTH_TEST);
-            glDepthFunc(GL_GREATER);  // reversed Z
-            glDepthMask(GL_TRUE);
-            glDisable(GL_CULL_FACE);
-            glDisable(GL_BLEND);
-            glEnable(GL_POLYGON_OFFSET_FILL);
-            glPolygonOffset(-1.5f, -2.0f);  // reversed Z: push stored depth away from the light
+            // Reversed Z; the offset pushes stored depth away from the light.
+            gpu::applyPipeline({.depth = {.test = true, .compare = GL_GREATER, .write = true},
+                                .polygonOffset = true,
+                                .offsetFactor = -1.5f,
+                                .offsetUnits = -2.0f});
             int layer = 0;
             for (const auto& views : context.shadowViews) {
                 for (const auto& view : views) {
@@ -53,8 +51,7 @@ void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
                     drawInstances(context, program_.id(), {});
                 }
             }
-            glDisable(GL_POLYGON_OFFSET_FILL);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
         });
     context.shadowMap = data.map;
 }

@@ -4,7 +4,7 @@
 //
 // Does not: tone-map (the viewport shows what a PNG from `sandbox render` shows).
 #include "nimbus/gpu/gl_objects.h"
-#include "nimbus/gpu/shader_program.h"
+#include "nimbus/gpu/fullscreen_pass.h"
 
 namespace nimbus::sandbox::editor {
 
@@ -16,9 +16,8 @@ public:
     const gpu::Texture& display() const { return display_; }
 
 private:
-    gpu::Program program_;
+    gpu::FullscreenPass pass_;
     gpu::Framebuffer framebuffer_;
-    gpu::VertexArray vertexArray_;  // core profile needs one bound, even with no attributes
     gpu::Texture display_;
 };
 

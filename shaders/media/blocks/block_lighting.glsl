@@ -220,41 +220,31 @@ float tableShadingPoint(float node[MAX_LISTED_NODES], float depth[MAX_LISTED_NOD
     return mix(lo, hi, atHi > atLo ? clamp((target - atLo) / (atHi - atLo), 0.0, 1.0) : 0.5);
 }
 
-// The source of a block's visible segment [front, back] of optical depth τ, whose kernels reach
-// `tails` further in front and behind (0 where the segment is cut): directional lights and
-// distant lamps at `pieces` points (at most MAX_SHADING_PIECES), one per piece of equal length, each holding the
-// depth profile's share of τ and weighted by the share of the block's light it sends to the front,
-// with the mesh visibility taken over the piece; point and spot lights near the segment or whose
-// cone's edge crosses it are integrated over the whole of it (blockLocalLightSegment: 1/d² across
-// a block spans far more than across one particle, and one shading point misses most of a lamp's
-// glow). `exact` (the BLOCK_EXACT_SHADING build only): the pieces and their points from the
-// listed particles, and the compositing order corrected (blockOrderLogFactor).
-vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails, float tau, GpuParticle block, ivec2 items,
-                        LayerOrder layer, int pieces, bool exact) {
+// A block's segment cut into pieces along the ray: each piece's extent, shading point, optical
+// depth and weight (its own opacity behind the pieces in front of it, by the profile's mass in it).
+struct BlockPieces {
+    int count;
+    vec2 span[MAX_SHADING_PIECES];
+    float at[MAX_SHADING_PIECES];
+    float weight[MAX_SHADING_PIECES];
+    float tau[MAX_SHADING_PIECES];
+};
+
+// The kernels' tails reach past [front, back] (which holds each particle's ±√3·R/3): where a
+// shadow boundary crosses them, the lit share counts them, as the reference does. Equal shares
+// would put a dense core's light in its thin tails, so each piece's weight follows the profile.
+// A block of lumps the slices do not resolve (the BLOCK_OWN_PARTICLES build) and the exact shading
+// place the pieces and their points by the listed particles (`listed`).
+BlockPieces blockPieces(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails, float tau, ivec2 items, int pieces, bool listed) {
+    BlockPieces p;
+    p.count = pieces;
     float t0 = profile.front, t1 = profile.back;
     float pieceLength = (t1 - t0) / float(pieces);
     float alpha = oneMinusExpNeg(tau);
-    // The kernels' tails reach past [front, back] (which holds each particle's ±√3·R/3): where a
-    // shadow boundary crosses them, the lit share counts them, as the reference does.
     BlockProfile wide = widenedByTails(profile, tails);
-    // Piece k: its extent, shading point and weight, the same for every light. Its weight is its own
-    // opacity behind the pieces in front of it, by the profile's mass in it (equal shares put a dense
-    // core's light in its thin tails).
-    // A block of lumps the slices do not resolve (the BLOCK_OWN_PARTICLES build) is shaded as particles
-    // mode shades a particle: each piece at its listed particles' shading point, with the light's
-    // transmittance integrated over the piece (layerTransmittance) from their exact own optical
-    // depth: a dense lump's light changes too steeply across a piece for one point to stand for it.
-    // A smooth block keeps the uniform point and one transmittance: the layer integral erred more there.
-    // The exact shading places the pieces and their points by the listed particles too (`listed`),
-    // with the light from the slices: its pieces are thin enough that the point's transmittance
-    // stands for the piece's.
-    bool own = kOwnParticles && items.y > 0;
-    bool listed = (kOwnParticles || exact) && items.y > 0;
-    vec2 pieceSpan[MAX_SHADING_PIECES];
-    float pieceAt[MAX_SHADING_PIECES], pieceWeight[MAX_SHADING_PIECES], pieceTau[MAX_SHADING_PIECES];
     for (int k = 0; k < pieces; ++k) {
         float pieceFront = t0 + float(k) * pieceLength;
-        pieceSpan[k] = vec2(k == 0 ? wide.front : pieceFront, k + 1 == pieces ? wide.back : pieceFront + pieceLength);
+        p.span[k] = vec2(k == 0 ? wide.front : pieceFront, k + 1 == pieces ? wide.back : pieceFront + pieceLength);
     }
     // The listed particles' optical depth at each piece's ends and LISTED_SUBNODES − 1 points between.
     float node[MAX_LISTED_NODES], depth[MAX_LISTED_NODES];
@@ -262,7 +252,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     if (listed) {
         for (int k = 0; k < pieces; ++k)
             for (int j = 0; j < LISTED_SUBNODES; ++j)
-                node[nodes++] = max(mix(pieceSpan[k].x, pieceSpan[k].y, float(j) / float(LISTED_SUBNODES)), 0.0);
+                node[nodes++] = max(mix(p.span[k].x, p.span[k].y, float(j) / float(LISTED_SUBNODES)), 0.0);
         node[nodes++] = max(wide.back, 0.0);
         listedDepthTable(items, origin, dir, node, nodes, depth);
     }
@@ -270,20 +260,65 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     float before = 0.0;  // the profile's share of the block's optical depth in front of piece k
     for (int k = 0; k < pieces; ++k) {
         float pieceFront = t0 + float(k) * pieceLength;
-        float after = k + 1 == pieces ? 1.0 : profileMassBefore(wide, pieceSpan[k].y);
+        float after = k + 1 == pieces ? 1.0 : profileMassBefore(wide, p.span[k].y);
         // The medium starts at the eye (a piece's kernel tails reach behind it when the camera is
         // inside), and the pieces' shares are the listed particles' too: a cut at the eye bends the
         // profile's moments, and its tails would reach behind the eye.
         if (listed) {
-            pieceSpan[k].x = max(pieceSpan[k].x, 0.0);
+            p.span[k].x = max(p.span[k].x, 0.0);
             if (k + 1 < pieces && listedTotal > 0.0) after = clamp((depth[(k + 1) * LISTED_SUBNODES] - depth[0]) / listedTotal, 0.0, 1.0);
         }
         float share = max(after - before, 0.0);
-        pieceAt[k] = listed ? tableShadingPoint(node, depth, k * LISTED_SUBNODES, pieceSpan[k], items, origin, dir) : pieceFront + shadingDepthFraction(tau * share) * pieceLength;
-        pieceTau[k] = tau * share;
-        pieceWeight[k] = alpha > 0.0 ? oneMinusExpNeg(tau * share) * exp(-tau * before) / alpha : share;
+        p.at[k] = listed ? tableShadingPoint(node, depth, k * LISTED_SUBNODES, p.span[k], items, origin, dir) : pieceFront + shadingDepthFraction(tau * share) * pieceLength;
+        p.tau[k] = tau * share;
+        p.weight[k] = alpha > 0.0 ? oneMinusExpNeg(tau * share) * exp(-tau * before) / alpha : share;
         before = after;
     }
+    return p;
+}
+
+// Light i from a distant lamp or the sun over the pieces, each at its shading point. With `own`
+// the light's transmittance is integrated over each piece (layerTransmittance) from the listed
+// particles' exact optical depth: a dense lump's light changes too steeply across a piece for one
+// point to stand for it. A smooth block keeps the slices' transmittance at the point. Adds to
+// `scattered` piece by piece (the sum's order is the frame's).
+void addBlockPiecesLight(inout vec3 scattered, int i, vec3 origin, vec3 dir, BlockPieces p, BlockProfile wide,
+                         float orderFactor[MAX_SHADING_PIECES], GpuParticle block, ivec2 items, bool own) {
+    BlockProfile piece = wide;
+    for (int k = 0; k < p.count; ++k) {
+        piece.front = p.span[k].x;
+        piece.back = p.span[k].y;
+        float t = p.at[k];
+        float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, piece, t) : 1.0;
+        vec3 x = origin + dir * t;
+        float transmittance = exp(-mediumOpticalDepth(i, x));
+        if (own) {
+            float atX = blockLightDepth(i, x, items, block);
+            float vBar = shadingDepthFraction(p.tau[k]) * p.tau[k];
+            transmittance = vBar > 1e-4 && p.tau[k] > 1e-4
+                ? layerTransmittance(blockLightDepth(i, origin + dir * p.span[k].x, items, block), atX, vBar, p.tau[k])
+                : exp(-atX);
+        }
+        scattered += p.weight[k] * orderFactor[k] * scatteredLight(i, x, dir, block, visibility, transmittance);
+    }
+}
+
+// The source of a block's visible segment [profile.front, profile.back] of optical depth τ, whose
+// kernels reach `tails` further in front and behind (0 where the segment is cut), for compositing it
+// as one layer: every light but point and spot lights near the segment or whose cone's edge crosses it at
+// `pieces` points (at most MAX_SHADING_PIECES), one per piece of equal length, each holding the
+// depth profile's share of τ and weighted by the share of the block's light it sends to the front,
+// with the mesh visibility taken over the piece; those lamps are integrated over the whole of it
+// (blockLocalLightSegment: 1/d² across a block spans far more than across one particle, and one
+// shading point misses most of a lamp's glow). `exact` (the BLOCK_EXACT_SHADING build only): the
+// pieces and their points from the listed particles, and the compositing order corrected
+// (blockOrderLogFactor).
+vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails, float tau, GpuParticle block, ivec2 items,
+                        LayerOrder layer, int pieces, bool exact) {
+    float t0 = profile.front, t1 = profile.back;
+    bool own = kOwnParticles && items.y > 0;
+    bool listed = (kOwnParticles || exact) && items.y > 0;
+    BlockPieces p = blockPieces(origin, dir, profile, tails, tau, items, pieces, listed);
     // What the other blocks' compositing order leaves wrong at each piece's point (block_order.glsl),
     // for every light, the ambient and the emission alike.
     float orderFactor[MAX_SHADING_PIECES];
@@ -293,13 +328,14 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
     if (exact) {
         weighted = 0.0;
         for (int k = 0; k < pieces; ++k) {
-            orderFactor[k] = exp(blockOrderLogFactor(pieceAt[k]));
-            weighted += pieceWeight[k] * orderFactor[k];
+            orderFactor[k] = exp(blockOrderLogFactor(p.at[k]));
+            weighted += p.weight[k] * orderFactor[k];
         }
     }
 #endif
     vec3 scattered = frame.ambient.rgb * weighted;
     float radius = block.positionRadius.w;
+    BlockProfile wide = widenedByTails(profile, tails);
     for (int i = 0; i < frame.counts.x; ++i) {
 #ifdef MEDIA_LOCAL_LIGHTS  // block_composite_pass.cpp builds this only for frames with point or spot lights
         if (lights[i].direction.w > 0.5) {
@@ -312,23 +348,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
             }
         }
 #endif
-        BlockProfile piece = wide;
-        for (int k = 0; k < pieces; ++k) {
-            piece.front = pieceSpan[k].x;
-            piece.back = pieceSpan[k].y;
-            float t = pieceAt[k];
-            float visibility = lights[i].spot.z >= 0.0 ? blockSegmentVisibility(i, origin, dir, piece, t) : 1.0;
-            vec3 x = origin + dir * t;
-            float transmittance = exp(-mediumOpticalDepth(i, x));
-            if (own) {
-                float atX = blockLightDepth(i, x, items, block);
-                float vBar = shadingDepthFraction(pieceTau[k]) * pieceTau[k];
-                transmittance = vBar > 1e-4 && pieceTau[k] > 1e-4
-                    ? layerTransmittance(blockLightDepth(i, origin + dir * pieceSpan[k].x, items, block), atX, vBar, pieceTau[k])
-                    : exp(-atX);
-            }
-            scattered += pieceWeight[k] * orderFactor[k] * scatteredLight(i, x, dir, block, visibility, transmittance);
-        }
+        addBlockPiecesLight(scattered, i, origin, dir, p, wide, orderFactor, block, items, own);
     }
     return block.albedoSigma.rgb * scattered + block.emissionG.rgb * weighted;
 }

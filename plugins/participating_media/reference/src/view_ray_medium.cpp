@@ -18,7 +18,15 @@ void ViewRayMedium::build(const ParticleBvh& bvh, const ParticleSet& particles, 
     clusters_.clear();
     candidates_.clear();
     totalOpticalDepth_ = 0.0;
+    collect(bvh, particles, origin, dir, end);
+    if (rayParticles_.empty()) return;
+    buildPieces();
+    buildClusters(pieceDepths());
+}
 
+// The particles whose chords the ray crosses, in index order, and the exact total optical depth.
+void ViewRayMedium::collect(const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& origin, const glm::dvec3& dir,
+                            double end) {
     bvh.forEachOnSegment(origin, dir, 0.0, end, [&](std::uint32_t i) {
         candidates_.push_back(i);
         return true;
@@ -47,8 +55,12 @@ void ViewRayMedium::build(const ParticleBvh& bvh, const ParticleSet& particles, 
         totalOpticalDepth_ += particleOpticalDepthOnChord(p.sigma, p.radius, p.b2, p.halfChord, p.enter - p.tClosest,
                                                           p.exit - p.tClosest);
     }
-    if (rayParticles_.empty()) return;
+}
 
+// Pieces between consecutive chord ends, and which particles are active in each (CSR). A particle
+// covers pieces [index of enter, index of exit): both values are breakpoints, so the binary searches
+// find them exactly. Leaves each ray particle's first and end piece in candidates_.
+void ViewRayMedium::buildPieces() {
     for (const RayParticle& p : rayParticles_) {
         breaks_.push_back(p.enter);
         breaks_.push_back(p.exit);
@@ -56,9 +68,6 @@ void ViewRayMedium::build(const ParticleBvh& bvh, const ParticleSet& particles, 
     std::sort(breaks_.begin(), breaks_.end());
     breaks_.erase(std::unique(breaks_.begin(), breaks_.end()), breaks_.end());
     const std::size_t pieces = breaks_.size() - 1;
-
-    // Active lists (CSR). A particle covers pieces [index of enter, index of exit): both values are
-    // breakpoints, so the binary searches find them exactly.
     activeStart_.assign(pieces + 1, 0);
     std::vector<std::uint32_t>& span = candidates_;  // reused as scratch: first and end piece per ray particle
     span.resize(2 * rayParticles_.size());
@@ -72,10 +81,14 @@ void ViewRayMedium::build(const ParticleBvh& bvh, const ParticleSet& particles, 
     for (std::size_t k = 0; k < pieces; ++k) activeStart_[k + 1] += activeStart_[k];
     active_.resize(activeStart_[pieces]);
     activeErfStart_.resize(activeStart_[pieces]);
+}
 
-    // Piece optical depths as differences of erf at consecutive breaks: one erf per (particle, break).
-    // A difference loses relative precision on tiny pieces but keeps ~1e-16 · τ absolute, which is
-    // all the cumulative depth (the sample map) needs; the pixel's T(0,d) uses the closed form above.
+// Piece optical depths as differences of erf at consecutive breaks: one erf per (particle, break).
+// A difference loses relative precision on tiny pieces but keeps ~1e-16 · τ absolute, which is
+// all the cumulative depth (the sample map) needs; the pixel's T(0,d) uses the closed form.
+std::vector<double> ViewRayMedium::pieceDepths() {
+    const std::size_t pieces = breaks_.size() - 1;
+    const std::vector<std::uint32_t>& span = candidates_;
     std::vector<double> pieceDepth(pieces, 0.0);
     std::vector<std::uint32_t> fill(activeStart_.begin(), activeStart_.end() - 1);
     for (std::size_t r = 0; r < rayParticles_.size(); ++r) {
@@ -89,8 +102,12 @@ void ViewRayMedium::build(const ParticleBvh& bvh, const ParticleSet& particles, 
             previous = next;
         }
     }
+    return pieceDepth;
+}
 
-    // Clusters: maximal runs of pieces with active particles; cumulative depth restarts in each.
+// Clusters: maximal runs of pieces with active particles; cumulative depth restarts in each.
+void ViewRayMedium::buildClusters(const std::vector<double>& pieceDepth) {
+    const std::size_t pieces = pieceDepth.size();
     cumulative_.assign(breaks_.size(), 0.0);
     double before = 0.0;
     for (std::uint32_t k = 0; k < pieces; ++k) {

@@ -69,13 +69,18 @@ public:
     double extinctionAt(std::uint32_t piece, double t, std::vector<double>* terms = nullptr) const;
 
 private:
+    void collect(const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& origin, const glm::dvec3& dir, double end);
+    void buildPieces();
+    std::vector<double> pieceDepths();
+    void buildClusters(const std::vector<double>& pieceDepth);
+
     std::vector<RayParticle> rayParticles_;
     std::vector<double> breaks_;            // piece k is [breaks_[k], breaks_[k+1]]
     std::vector<double> cumulative_;        // τ from the cluster start to breaks_[k] (per cluster)
     std::vector<std::uint32_t> activeStart_, active_;  // CSR: active particles of each piece
     std::vector<double> activeErfStart_;    // per CSR entry: erf(√k (piece start - tClosest))
     std::vector<RayCluster> clusters_;
-    std::vector<std::uint32_t> candidates_;
+    std::vector<std::uint32_t> candidates_;  // the BVH's particles, then each ray particle's first and end piece
     double totalOpticalDepth_ = 0.0;
 };
 

@@ -37,12 +37,9 @@ gpu::ResourceHandle BillboardPass::add(gpu::FrameGraph& graph, GraphFrame& conte
             glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
-            blendPremultipliedOver();
+            gpu::applyPipeline(kMediaOver);
             glBindVertexArray(vertexArray_.id());
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
-            glBindVertexArray(0);
-            glDisable(GL_BLEND);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.media;
 }

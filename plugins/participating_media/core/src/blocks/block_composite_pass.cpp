@@ -32,63 +32,79 @@ gpu::ProgramDesc blockCompositeDesc(std::uint8_t build) {
     return desc;
 }
 
-gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& made,
-                                               const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
-                                               bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
-                                               const MediaTarget& target) {
-    struct Composite : LitMediaInputs {
-        gpu::ResourceHandle depths, sums1, sums2, moments, seamMask, seamStencil;
-    };
-    const int w = target.size.x, h = target.size.y;
-    // Runs of consecutive ranks that want the same build, drawn in order.
-    struct Run {
-        BlockRankRun ranks;
-        std::uint8_t build;
-    };
-    std::vector<Run> runs;
+namespace {
+
+std::vector<BlockCompositePass::Run> buildRuns(const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds) {
+    std::vector<BlockCompositePass::Run> runs;
     for (std::size_t r = 0; r < backToFront.size(); ++r) {
         const std::uint8_t build = builds[backToFront[r]] & 7;
         if (runs.empty() || build != runs.back().build) runs.push_back({{static_cast<GLint>(r), 0}, build});
         ++runs.back().ranks.count;
     }
-    // With seamOnly, the mask says where the blocks a mesh comes near are cut, and an exactly shaded
-    // run is drawn twice: smoothly off the seam, then exactly near it (the mask pass's stencil says
-    // which texels each draw shades). At each texel one of the two draws writes every block of the
-    // run, so the back-to-front order holds.
+    return runs;
+}
+
+// A seam run's two draws: smoothly where the stencil is 0, exactly where it is 1 (read only).
+gpu::PipelineState drawState(GLint seamPart) {
+    gpu::PipelineState state = kMediaOver;
+    if (seamPart == 0) return state;
+    state.stencil = {.test = true, .compare = GL_EQUAL, .reference = seamPart == 2 ? 1 : 0, .readMask = 0xFF, .writeMask = 0x00};
+    return state;
+}
+
+}  // namespace
+
+// With seamOnly, the mask says where the blocks a mesh comes near are cut, and an exactly shaded
+// run is drawn twice: smoothly off the seam, then exactly near it (the mask pass's stencil says
+// which texels each draw shades). At each texel one of the two draws writes every block of the
+// run, so the back-to-front order holds.
+BlockCompositePass::Seam BlockCompositePass::addSeamPasses(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs,
+                                                           bool seamOnly, const BlockGpuBuffers& blocks, const BlockImpostorAtlas& atlas,
+                                                           const MediaTarget& target, int cell) {
     std::vector<BlockRankRun> cutRuns;
     bool seamRuns = false;
     for (const Run& run : runs) {
         if (run.build & kBlockExactCut) cutRuns.push_back(run.ranks);
         seamRuns = seamRuns || (run.build & kBlockExactShading);
     }
-    struct Seam {
-        gpu::ResourceHandle mask, stencil;
-    } seam;
-    const int seamCell = seamMaskCell(target.size);
-    if (seamOnly && seamRuns && !cutRuns.empty()) {
-        if (!seamMask_) seamMask_ = std::make_unique<BlockSeamMaskPass>();
-        if (!seamStencil_) seamStencil_ = std::make_unique<BlockSeamStencilPass>();
-        seam.mask = seamMask_->add(graph, context, std::move(cutRuns), blocks, made.depths, target, seamCell);
-        seam.stencil = seamStencil_->add(graph, seam.mask, target, seamCell);
-    }
-    // Each draw: its ranks, program and seam part (block_composite.frag uSeamPart).
-    struct Draw {
-        BlockRankRun ranks;
-        const gpu::Program* program;
-        GLint seamPart;
-    };
+    Seam seam;
+    if (!seamOnly || !seamRuns || cutRuns.empty()) return seam;
+    if (!seamMask_) seamMask_ = std::make_unique<BlockSeamMaskPass>();
+    if (!seamStencil_) seamStencil_ = std::make_unique<BlockSeamStencilPass>();
+    seam.mask = seamMask_->add(graph, context, std::move(cutRuns), blocks, atlas.depths, target, cell);
+    seam.stencil = seamStencil_->add(graph, seam.mask, target, cell);
+    return seam;
+}
+
+std::vector<BlockCompositePass::Draw> BlockCompositePass::planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam,
+                                                                    const std::vector<Light>& lights) {
     std::vector<Draw> draws;
     for (const Run& run : runs) {
         const auto smooth = static_cast<std::uint8_t>(run.build & ~kBlockExactShading);
         if (!seamOnly || !(run.build & kBlockExactShading)) {
-            draws.push_back({run.ranks, &programs(run.build).forLights(context.host.lights), 0});
-        } else if (seam.mask.valid()) {
-            draws.push_back({run.ranks, &programs(smooth).forLights(context.host.lights), 1});
-            draws.push_back({run.ranks, &programs(run.build).forLights(context.host.lights), 2});
+            draws.push_back({run.ranks, &programs(run.build).forLights(lights), 0});
+        } else if (seam) {
+            draws.push_back({run.ranks, &programs(smooth).forLights(lights), 1});
+            draws.push_back({run.ranks, &programs(run.build).forLights(lights), 2});
         } else {  // no block a mesh comes near: no seam
-            draws.push_back({run.ranks, &programs(smooth).forLights(context.host.lights), 0});
+            draws.push_back({run.ranks, &programs(smooth).forLights(lights), 0});
         }
     }
+    return draws;
+}
+
+gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& made,
+                                            const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
+                                            bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
+                                            const MediaTarget& target) {
+    struct Composite : LitMediaInputs {
+        gpu::ResourceHandle depths, sums1, sums2, moments, seamMask, seamStencil;
+    };
+    const int w = target.size.x, h = target.size.y;
+    const std::vector<Run> runs = buildRuns(backToFront, builds);
+    const int seamCell = seamMaskCell(target.size);
+    const Seam seam = addSeamPasses(graph, context, runs, seamOnly, blocks, made, target, seamCell);
+    const std::vector<Draw> draws = planDraws(runs, seamOnly, seam.mask.valid(), context.host.lights);
     const auto& data = graph.addPass<Composite>(
         "media_blocks",
         [&](gpu::PassBuilder& builder, Composite& d) {
@@ -105,7 +121,6 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
         [this, draws, &context, &blocks, &particles, w, h, seamCell, scale = target.fullResScale](const gpu::PassResources& r,
                                                                                                  const Composite& d) {
             const gpu::Framebuffer fbo = bindClearedMediaTarget(r.id(d.media), {w, h});
-            // Read only: a seam run's draws test it (stencil 1: near the seam), write nothing to it.
             if (d.seamStencil.valid()) glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, r.id(d.seamStencil), 0);
             for (const Draw& draw : draws) {
                 glProgramUniform2f(draw.program->id(), 1, scale.x, scale.y);
@@ -121,27 +136,15 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
             glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));
             glBindTextureUnit(kImpostorMomentsUnit, r.id(d.moments));
             if (d.seamMask.valid()) glBindTextureUnit(kSeamMaskUnit, r.id(d.seamMask));
-            blendPremultipliedOver();
             glBindVertexArray(vertexArray_.id());
             for (const Draw& draw : draws) {
                 const GLuint program = draw.program->id();
                 glUseProgram(program);
                 glProgramUniform1i(program, kFirstRankLocation, draw.ranks.first);
                 glProgramUniform1i(program, kSeamPartLocation, draw.seamPart);
-                if (draw.seamPart != 0) {
-                    glEnable(GL_STENCIL_TEST);
-                    glStencilFunc(GL_EQUAL, draw.seamPart == 2 ? 1 : 0, 0xFF);
-                    glStencilMask(0x00);
-                } else {
-                    glDisable(GL_STENCIL_TEST);
-                }
+                gpu::applyPipeline(drawState(draw.seamPart));
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, draw.ranks.count);
             }
-            glDisable(GL_STENCIL_TEST);
-            glStencilMask(0xFF);
-            glBindVertexArray(0);
-            glDisable(GL_BLEND);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.media;
 }

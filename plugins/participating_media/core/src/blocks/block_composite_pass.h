@@ -34,8 +34,26 @@ public:
                                bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                const MediaTarget& target);
 
+    // One draw of the composite: its ranks, program and seam part (block_composite.frag uSeamPart).
+    struct Draw {
+        BlockRankRun ranks;
+        const gpu::Program* program;
+        GLint seamPart;
+    };
+    // Consecutive ranks that want the same build, drawn in order.
+    struct Run {
+        BlockRankRun ranks;
+        std::uint8_t build;
+    };
+    struct Seam {
+        gpu::ResourceHandle mask, stencil;
+    };
+
 private:
     LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for
+    Seam addSeamPasses(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs, bool seamOnly,
+                       const BlockGpuBuffers& blocks, const BlockImpostorAtlas& atlas, const MediaTarget& target, int cell);
+    std::vector<Draw> planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam, const std::vector<Light>& lights);
 
     std::unique_ptr<LocalLightPrograms> programs_[8];  // by BlockCompositeBuild bits
     std::unique_ptr<BlockSeamMaskPass> seamMask_;        // made when a frame first needs them

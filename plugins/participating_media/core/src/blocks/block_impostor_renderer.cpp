@@ -5,9 +5,22 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "nimbus/media/gpu_bindings.h"
+#include "nimbus/gpu/pipeline_state.h"
 #include "nimbus/gpu/shader_program.h"
 
 namespace nimbus::media {
+namespace {
+
+// The paper's min for the depths with a separate alpha equation (add, the optical depth) on target
+// 0; the sums and moments add; the tile's rectangle is four clip planes.
+constexpr gpu::PipelineState impostorState() {
+    gpu::PipelineState state = gpu::PipelineState::blending(gpu::kAdditive);
+    state.blend[0].equationRgb = GL_MIN;
+    state.clipDistances = 4;
+    return state;
+}
+
+}  // namespace
 
 BlockImpostorRenderer::BlockImpostorRenderer() {
     program_ = gpu::compileProgram({.vertex = "media/blocks/block_impostors.vert", .fragment = "media/blocks/block_impostors.frag"});
@@ -30,18 +43,7 @@ void BlockImpostorRenderer::render(const BlockViewPlan& plan, std::size_t tileSe
     for (GLint i = 1; i < 4; ++i)
         if (textures[i] != 0) glClearNamedFramebufferfv(fbo.id(), GL_COLOR, i, zero);
     glViewport(0, 0, plan.atlasSize.x, plan.atlasSize.y);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendEquationSeparatei(0, GL_MIN, GL_FUNC_ADD);  // seed 000 §2.1: min for depths, a separate alpha equation
-    glBlendFunci(0, GL_ONE, GL_ONE);
-    glBlendEquationi(1, GL_FUNC_ADD);
-    glBlendFunci(1, GL_ONE, GL_ONE);
-    glBlendEquationi(2, GL_FUNC_ADD);
-    glBlendFunci(2, GL_ONE, GL_ONE);
-    glBlendEquationi(3, GL_FUNC_ADD);
-    glBlendFunci(3, GL_ONE, GL_ONE);
-    for (GLenum plane = 0; plane < 4; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
+    gpu::applyPipeline(impostorState());
 
     const GLuint program = program_.id();
     glUseProgram(program);
@@ -60,12 +62,6 @@ void BlockImpostorRenderer::render(const BlockViewPlan& plan, std::size_t tileSe
     glProgramUniform3fv(program, 5, 1, glm::value_ptr(plan.view.eye));
     glBindVertexArray(vertexArray_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks.itemCount()));
-    glBindVertexArray(0);
-
-    for (GLenum plane = 0; plane < 4; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
-    glBlendEquation(GL_FUNC_ADD);
-    glDisable(GL_BLEND);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 }  // namespace nimbus::media

@@ -30,11 +30,8 @@ gpu::ResourceHandle BlockLampSlicePass::add(gpu::FrameGraph& graph, gpu::Resourc
                 setParticleSliceUniforms(program, v, resolution);
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks.lampSliceParticleCount()));
-                glBindVertexArray(0);
-                glDisable(GL_BLEND);
                 unbindSliceLayers(fbo.id(), v);
             }
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.slices;
 }

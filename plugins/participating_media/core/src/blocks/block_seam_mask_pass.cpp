@@ -6,6 +6,7 @@
 
 #include "common/frame_blocks.h"
 #include "nimbus/media/gpu_bindings.h"
+#include "nimbus/gpu/pipeline_state.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 
@@ -61,17 +62,12 @@ gpu::ResourceHandle BlockSeamMaskPass::add(gpu::FrameGraph& graph, GraphFrame& c
             blocks.bind(0);
             glBindTextureUnit(kSceneDepthUnit, r.id(d.depth));
             glBindTextureUnit(kImpostorDepthsUnit, r.id(d.impostorDepths));
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_CULL_FACE);
-            glDisable(GL_BLEND);  // every fragment writes 1
+            gpu::applyPipeline({});  // every fragment writes 1
             glBindVertexArray(vertexArray_.id());
             for (const BlockRankRun& run : runs) {
                 glProgramUniform1i(program, kFirstRankLocation, run.first);
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, run.count);
             }
-
-            glBindVertexArray(0);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.mask;
 }

@@ -3,6 +3,7 @@
 // at the media target's size, where the composite shades a seam run exactly.
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/fullscreen_pass.h"
 #include "nimbus/gpu/gl_objects.h"
 
 namespace nimbus::media {
@@ -14,8 +15,7 @@ public:
     gpu::ResourceHandle add(gpu::FrameGraph& graph, gpu::ResourceHandle mask, const MediaTarget& target, int cell);
 
 private:
-    gpu::Program program_;
-    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+    gpu::FullscreenPass pass_;
 };
 
 }  // namespace nimbus::media

@@ -42,11 +42,8 @@ gpu::ResourceHandle BlockSlicePass::add(gpu::FrameGraph& graph, const std::vecto
                 setSliceViewUniforms(program, v, resolution);
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(plans[i].tiles.size()));
-                glBindVertexArray(0);
-                glDisable(GL_BLEND);
                 unbindSliceLayers(fbo.id(), v);
             }
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.slices;
 }

@@ -28,12 +28,4 @@ gpu::Framebuffer bindClearedMediaTarget(GLuint texture, glm::ivec2 size) {
     return fbo;
 }
 
-void blendPremultipliedOver() {
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
-}
-
 }  // namespace nimbus::media

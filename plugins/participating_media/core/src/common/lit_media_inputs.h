@@ -4,6 +4,7 @@
 // mesh shadow map and light slices they light with.
 #include "common/media_target.h"
 #include "nimbus/gpu/gl_objects.h"
+#include "nimbus/gpu/pipeline_state.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/media/graph_frame.h"
 
@@ -22,6 +23,6 @@ void bindLitMediaInputs(const gpu::PassResources& resources, const LitMediaInput
 gpu::Framebuffer bindClearedMediaTarget(GLuint texture, glm::ivec2 size);
 // Premultiplied "over" with alpha as the product of (1 − α): rgb = src + (1 − α)·dst, a = (1 − α)·a;
 // no depth test or culling (the shaders clip against the scene depth themselves).
-void blendPremultipliedOver();
+inline constexpr gpu::PipelineState kMediaOver = gpu::PipelineState::blending(gpu::kPremultipliedOver);
 
 }  // namespace nimbus::media

@@ -2,6 +2,7 @@
 // The `media_host_depth` pass (shaders/media/frame/host_depth.frag): a standard-Z host depth re-encoded
 // as reversed Z for the plugin's camera, into an R32F texture the media passes read.
 #include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/fullscreen_pass.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/view.h"
 
@@ -14,8 +15,7 @@ public:
     gpu::ResourceHandle add(gpu::FrameGraph& graph, gpu::ResourceHandle hostDepth, const gpu::View& camera);
 
 private:
-    gpu::Program program_;
-    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+    gpu::FullscreenPass pass_;
 };
 
 }  // namespace nimbus::media

@@ -43,12 +43,9 @@ gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& contex
             bindLitMediaInputs(resources, d);
             glProgramUniform1i(program.id(), 0, shading.softParticles ? 1 : 0);
             glProgramUniform2f(program.id(), 1, scale.x, scale.y);
-            blendPremultipliedOver();
+            gpu::applyPipeline(kMediaOver);
             glBindVertexArray(vertexArray_.id());
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
-            glBindVertexArray(0);
-            glDisable(GL_BLEND);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.media;
 }

@@ -63,12 +63,9 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
             glProgramUniform2f(program.id(), 1, scale.x, scale.y);
             glProgramUniform1i(program.id(), kFragmentSunLocation, lamps.sun);
             if (lamps.lamps[0] >= 0) glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
-            blendPremultipliedOver();
+            gpu::applyPipeline(kMediaOver);
             glBindVertexArray(vertexArray_.id());
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
-            glBindVertexArray(0);
-            glDisable(GL_BLEND);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.media;
 }

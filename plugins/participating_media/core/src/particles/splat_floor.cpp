@@ -5,6 +5,7 @@
 
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/pass_timer.h"
+#include "nimbus/gpu/pipeline_state.h"
 
 namespace nimbus::media {
 
@@ -13,19 +14,12 @@ SplatFloor::SplatFloor() : program_(gpu::compileProgram({.vertex = "media/partic
 void SplatFloor::draw(const ParticleGpuBuffer& buffer, GLuint framebuffer, int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(0, 0, width, height);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);  // as the media passes
+    gpu::applyPipeline(gpu::PipelineState::blending(gpu::kPremultipliedOver));  // as the media passes
     glUseProgram(program_.id());
     frameBlocks_.bind();
     buffer.bindParticles();
     glBindVertexArray(vertexArray_.id());
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
-    glBindVertexArray(0);
-    glDisable(GL_BLEND);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 double SplatFloor::measure(const ParticleGpuBuffer& buffer, const gpu::View& view, int repeats) {

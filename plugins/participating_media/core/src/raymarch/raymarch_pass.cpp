@@ -9,8 +9,7 @@
 
 namespace nimbus::media {
 
-RaymarchPass::RaymarchPass()
-    : program_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/raymarch/raymarch.frag"})) {}
+RaymarchPass::RaymarchPass() : pass_("media/raymarch/raymarch.frag") {}
 
 void RaymarchPass::upload(const VoxelGrid& grid) {
     for (gpu::Texture* texture : {&scattering_, &emission_})
@@ -43,15 +42,9 @@ gpu::ResourceHandle RaymarchPass::add(gpu::FrameGraph& graph, GraphFrame& contex
         },
         [this, &context, w, h, corner, extent, maxSteps, voxel = static_cast<float>(grid.voxel.x), rayleigh = grid.rayleigh,
          scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
-            gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.media), 0);
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            glViewport(0, 0, w, h);
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_CULL_FACE);
-            glDisable(GL_BLEND);  // every texel is written once: (in-scattered radiance, transmittance)
-            const GLuint program = program_.id();
-            glUseProgram(program);
+            // Every texel is written once, unblended: (in-scattered radiance, transmittance).
+            const gpu::Framebuffer fbo = gpu::singleTargetFramebuffer(resources.id(d.media), GL_RGBA32F);
+            const GLuint program = pass_.program();
             context.blocks->bind();
             bindLitMediaInputs(resources, d);
             glBindTextureUnit(kVoxelScatteringUnit, scattering_.id());
@@ -62,10 +55,7 @@ gpu::ResourceHandle RaymarchPass::add(gpu::FrameGraph& graph, GraphFrame& contex
             glProgramUniform1f(program, 4, voxel);
             glProgramUniform1i(program, 5, std::max(maxSteps, 1));
             glProgramUniform1i(program, 6, rayleigh ? 1 : 0);
-            glBindVertexArray(vertexArray_.id());
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            glBindVertexArray(0);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            pass_.draw(fbo.id(), {w, h});
         });
     return data.media;
 }

@@ -4,6 +4,7 @@
 // transmittance is spent. Light comes from the light slices and the mesh shadow maps.
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/fullscreen_pass.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/media/graph_frame.h"
@@ -21,9 +22,8 @@ public:
 private:
     void upload(const VoxelGrid& grid);
 
-    gpu::Program program_;
+    gpu::FullscreenPass pass_;
     gpu::Texture scattering_, emission_;
-    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 
 }  // namespace nimbus::media

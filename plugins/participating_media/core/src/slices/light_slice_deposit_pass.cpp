@@ -69,11 +69,7 @@ gpu::ResourceHandle LightSliceDepositPass::add(gpu::FrameGraph& graph, const std
             buffer.bindParticles();
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlicePiecesBinding, pieces_.id());
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_CULL_FACE);
-            glEnable(GL_BLEND);
-            glBlendEquation(GL_FUNC_ADD);
-            glBlendFunc(GL_ONE, GL_ONE);  // optical depth adds: no sort needed
+            gpu::applyPipeline(kSliceAdd);
             glBindVertexArray(vertexArray_.id());
             int firstLayer = 0;
             for (std::size_t v = 0; v < views.size(); ++v) {
@@ -84,9 +80,6 @@ gpu::ResourceHandle LightSliceDepositPass::add(gpu::FrameGraph& graph, const std
                 if (count > 0) glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, count);
                 firstLayer += views[v].slices;
             }
-            glBindVertexArray(0);
-            glDisable(GL_BLEND);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.slabs;
 }

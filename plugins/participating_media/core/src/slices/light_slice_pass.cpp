@@ -36,15 +36,11 @@ gpu::ResourceHandle LightSlicePass::add(gpu::FrameGraph& graph, const std::vecto
             const GLuint program = program_.id();
             for (const auto& v : views) {
                 bindSliceLayers(fbo.id(), resources.id(d.slices), v);
-
                 setParticleSliceUniforms(program, v, resolution);
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
-                glBindVertexArray(0);
                 unbindSliceLayers(fbo.id(), v);
             }
-            glDisable(GL_BLEND);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.slices;
 }

@@ -5,12 +5,10 @@
 #include "slices/light_slice_prefix_pass.h"
 
 #include "nimbus/media/gpu_bindings.h"
-#include "nimbus/gpu/shader_program.h"
 
 namespace nimbus::media {
 
-LightSlicePrefixPass::LightSlicePrefixPass()
-    : program_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_prefix.frag"})) {}
+LightSlicePrefixPass::LightSlicePrefixPass() : pass_("media/slices/light_slice_prefix.frag") {}
 
 gpu::ResourceHandle LightSlicePrefixPass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
                                                  gpu::ResourceHandle slabs) {
@@ -27,24 +25,16 @@ gpu::ResourceHandle LightSlicePrefixPass::add(gpu::FrameGraph& graph, const std:
         },
         [this, views, resolution](const gpu::PassResources& resources, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glUseProgram(program_.id());
             glBindTextureUnit(kSlabsUnit, resources.id(d.slabs));
-            glViewport(0, 0, resolution, resolution);
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_CULL_FACE);
-            glDisable(GL_BLEND);
-            glBindVertexArray(vertexArray_.id());
             int firstSlab = 0;
             for (const SliceView& v : views) {
                 bindSliceLayers(fbo.id(), resources.id(d.slices), v);
-                glProgramUniform1i(program_.id(), 0, firstSlab);
-                glProgramUniform1i(program_.id(), 1, v.slices);
-                glDrawArrays(GL_TRIANGLES, 0, 3);
+                glProgramUniform1i(pass_.program(), 0, firstSlab);
+                glProgramUniform1i(pass_.program(), 1, v.slices);
+                pass_.draw(fbo.id(), glm::ivec2(resolution));
                 unbindSliceLayers(fbo.id(), v);
                 firstSlab += v.slices;
             }
-            glBindVertexArray(0);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
         });
     return data.slices;
 }

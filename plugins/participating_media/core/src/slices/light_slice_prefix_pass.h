@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/fullscreen_pass.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "slices/slice_view.h"
 
@@ -16,8 +17,7 @@ public:
                                gpu::ResourceHandle slabs);
 
 private:
-    gpu::Program program_;
-    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+    gpu::FullscreenPass pass_;
 };
 
 }  // namespace nimbus::media

@@ -4,13 +4,11 @@
 #include "upsample/media_depth_used_pass.h"
 
 #include "common/frame_blocks.h"
-#include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 
 namespace nimbus::media {
 
-MediaDepthUsedPass::MediaDepthUsedPass()
-    : program_(gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/upsample/depth_used.frag"})) {}
+MediaDepthUsedPass::MediaDepthUsedPass() : pass_("media/upsample/depth_used.frag") {}
 
 gpu::ResourceHandle MediaDepthUsedPass::add(gpu::FrameGraph& graph, GraphFrame& context, const MediaTarget& target) {
     struct Data {
@@ -24,20 +22,11 @@ gpu::ResourceHandle MediaDepthUsedPass::add(gpu::FrameGraph& graph, GraphFrame& 
             d.scene = builder.read(context.sceneDepth);
         },
         [this, &context, size, scale = target.fullResScale](const gpu::PassResources& r, const Data& d) {
-            gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.depth), 0);
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            glViewport(0, 0, size.x, size.y);
-            glDisable(GL_DEPTH_TEST);
-            glDisable(GL_BLEND);
-            glUseProgram(program_.id());
+            const gpu::Framebuffer fbo = gpu::singleTargetFramebuffer(r.id(d.depth), GL_R32F);
             context.blocks->bind();
-            glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
+            glProgramUniform2f(pass_.program(), 1, scale.x, scale.y);
             glBindTextureUnit(kSceneDepthUnit, r.id(d.scene));
-            glBindVertexArray(vertexArray_.id());
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            glBindVertexArray(0);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            pass_.draw(fbo.id(), size);
         });
     return data.depth;
 }

@@ -2,6 +2,7 @@
 // The `media_depth_used` pass (shaders/media/upsample/depth_used.frag).
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/fullscreen_pass.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/media/graph_frame.h"
 
@@ -15,8 +16,7 @@ public:
     gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const MediaTarget& target);
 
 private:
-    gpu::Program program_;
-    gpu::VertexArray vertexArray_ = gpu::createVertexArray();
+    gpu::FullscreenPass pass_;
 };
 
 }  // namespace nimbus::media
