@@ -80,8 +80,11 @@ nlohmann::json runScaling(Session& session, const media::ParticleSet& sceneParti
     if (bounds.empty()) bounds = assets::meshBounds(session.scene(), scene::currentWorldTransforms(app.world()));
     const std::size_t counts[] = {1000, 10000, 100000, 1000000};
     const glm::ivec2 sizes[] = {{320, 180}, {640, 360}, {1280, 720}};
-    // The exact tier in both modes and the fast tier, each as the settings it picks.
-    const std::pair<const char*, const char*> tiers[] = {{"particles", "quality=exact"}, {"blocks", "mode=blocks"}, {"fast", "quality=fast"}};
+    // The exact tier of every mode in the scaling sweep, and the default mode's fast tier.
+    std::vector<std::pair<std::string, std::string>> tiers;
+    for (const media::TechniqueEntry& entry : media::builtInTechniques().entries())
+        if (entry.scalingBench) tiers.emplace_back(entry.name, "mode=" + entry.name);
+    tiers.emplace_back("fast", "quality=fast");
     constexpr double kBudgetMs = 8000.0;  // a setting whose 10× smaller case took a tenth of this is skipped
     nlohmann::json rows = nlohmann::json::array();
     ProgressBar progress("scaling", std::size(counts) * std::size(sizes) * std::size(tiers));
@@ -124,7 +127,7 @@ nlohmann::json runScaling(Session& session, const media::ParticleSet& sceneParti
                 row["frame_ms"] = lastMs[key];
                 row["splat_floor_ms"] = medium.measureSplatFloor(render::makeView(input.camera, settings.width, settings.height), frames);
                 row["frames"] = frames;
-                row["blocks"] = medium.stats().blocks;
+                row["blocks"] = static_cast<int>(medium.stats().value("blocks"));
                 rows.push_back(row);
             }
         }

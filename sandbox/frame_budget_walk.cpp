@@ -14,9 +14,9 @@ namespace {
 
 void applyRung(Settings& settings, const media::ecs::QualityRung& rung, const std::set<std::string>& userKeys) {
     for (const auto& r : media::ecs::kQualityLadder)
-        for (const auto& [key, value] : r.settings)
+        for (const auto& [key, value] : r.assignments())
             if (!userKeys.count(key)) settings.unset(key);
-    for (const auto& [key, value] : rung.settings)
+    for (const auto& [key, value] : rung.assignments())
         if (!userKeys.count(key)) settings.set(key, value, std::string("--budget-ms (") + rung.name + ")");
 }
 
@@ -26,7 +26,7 @@ BudgetChoice settleOnBudget(ecs::App& app, double budgetMs, int maxFrames) {
     auto& settings = app.resource<Settings>();
     std::set<std::string> userKeys;
     for (const auto& rung : media::ecs::kQualityLadder)
-        for (const auto& [key, value] : rung.settings)
+        for (const auto& [key, value] : rung.assignments())
             if (settings.has(key) && settings.origin(key) != "sandbox's default") userKeys.insert(key);
     const int rungs = static_cast<int>(std::size(media::ecs::kQualityLadder));
     FrameBudget budget({.budgetMs = budgetMs, .rungs = rungs});

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <variant>
 
 #include <epoxy/gl.h>
 #include <nlohmann/json.hpp>
@@ -59,27 +60,89 @@ void renderFrame(ecs::App& app) {
     app.runPhase(ecs::phases::kPresent);
 }
 
+// The median frame over `frames` GPU-synchronised frames after a warm-up, then per-pass medians over
+// as many more, each pass synchronised (which inflates the total, so the two are measured apart).
+void measureFrames(ecs::App& app, int frames, nlohmann::json& stats) {
+    using Clock = std::chrono::steady_clock;
+    for (int i = 0; i < 3; ++i) renderFrame(app);  // warm-up: shader compiles, pool fills
+    std::vector<double> ms;
+    for (int i = 0; i < frames; ++i) {
+        glFinish();
+        const auto start = Clock::now();
+        renderFrame(app);
+        glFinish();
+        ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    auto& request = app.resource<render::RenderRequest>();
+    gpu::GlPassTimer timer;
+    request.timer = &timer;
+    for (int i = 0; i < frames; ++i) renderFrame(app);
+    request.timer = nullptr;
+    nlohmann::json passes = nlohmann::json::object();
+    for (const auto& [name, samples] : timer.samples()) passes[name] = gpu::median(samples);
+    stats["frame_ms"] = gpu::median(ms);
+    stats["frame_ms_min"] = *std::min_element(ms.begin(), ms.end());
+    stats["frames"] = frames;
+    stats["passes_ms"] = passes;
+}
+
+// What the media renderer did this frame: the shared figures and its technique's own.
+void addMediaStats(ecs::App& app, nlohmann::json& stats) {
+    const auto* media = app.world().tryResource<media::ecs::MediaRendererState>();
+    if (media == nullptr || !media->renderer) return;
+    const media::MediaFrameStats& s = media->renderer->stats();
+    stats["media_mode"] = s.mode;
+    if (const auto quality = app.resource<Settings>().text("quality")) stats["quality"] = *quality;
+    stats["media_particles"] = s.particles;
+    stats["media_slices"] = s.slices;
+    stats["media_slice_views"] = s.sliceViews;
+    // What the "auto" settings chose this frame.
+    stats["media_slice_resolution"] = s.sliceResolution;
+    stats["media_scale_used"] = s.mediaScale;
+    for (const media::TechniqueStat& t : s.technique) std::visit([&](auto v) { stats["media_" + t.key] = v; }, t.value);
+}
+
+void writeStats(const RenderOptions& o, Session& session, const gpu::Context& context, std::uint64_t glErrors, nlohmann::json& stats) {
+    ecs::App& app = session.app();
+    const auto& state = app.resource<render::RendererState>();
+    stats["scene"] = o.scene;
+    stats["time"] = session.time();
+    stats["camera"] = state.lastInput.camera.name;
+    stats["gl_renderer"] = context.renderer();
+    stats["gl_version"] = context.version();
+    stats["gl_errors"] = glErrors;
+    stats["active_passes"] = state.renderer->lastActivePasses();
+    addMediaStats(app, stats);
+    std::ofstream file(o.stats);
+    if (!file) throwInputError(o.stats, "", "", "cannot write the stats file");
+    file << stats.dump(2) << "\n";
+}
+
+// The session for the options, with rendering on at width×height; bad input is refused before any GL work.
+std::unique_ptr<Session> openSession(const RenderOptions& o, int width, int height) {
+    SessionOptions options{o.scene, o.time, o.settings};
+    if (!o.mode.empty()) options.options.emplace_back("mode=" + o.mode, "--mode");
+    if (!o.quality.empty()) options.options.emplace_back("quality=" + o.quality, "--quality");
+    auto session = std::make_unique<Session>(options);
+    useDefaultQuality(session->app(), kRenderDefaultQuality);
+    auto& request = session->app().resource<render::RenderRequest>();
+    request.enabled = true;
+    request.settings.width = width;
+    request.settings.height = height;
+    request.camera = o.camera;
+    return session;
+}
+
 int run(const RenderOptions& o) {
     int width = 0, height = 0;
     parseSize(o.size, width, height);
     if (o.frames < 20) throwInputError("--frames", std::to_string(o.frames), "", "at least 20 frames are timed");
     const double budgetMs = parseBudget(o.budget);
-
-    SessionOptions options{o.scene, o.time, o.settings};
-    if (!o.mode.empty()) options.options.emplace_back("mode=" + o.mode, "--mode");
-    if (!o.quality.empty()) options.options.emplace_back("quality=" + o.quality, "--quality");
     std::unique_ptr<gpu::Context> context;  // declared first: it must outlive the GL objects the session makes
-    auto session = std::make_unique<Session>(options);  // bad input is refused before any GL work
+    std::unique_ptr<Session> session = openSession(o, width, height);
     context = gpu::Context::create();
     ecs::App& app = session->app();
-    useDefaultQuality(app, kRenderDefaultQuality);
-    auto& request = app.resource<render::RenderRequest>();
-    request.enabled = true;
-    request.settings.width = width;
-    request.settings.height = height;
-    request.camera = o.camera;
 
-    using Clock = std::chrono::steady_clock;
     nlohmann::json stats;
     if (budgetMs > 0.0) {
         const BudgetChoice choice = settleOnBudget(app, budgetMs);
@@ -89,28 +152,7 @@ int run(const RenderOptions& o) {
         stats["chosen"] = choice.rung;
     }
     renderFrame(app);
-    if (!o.stats.empty()) {
-        for (int i = 0; i < 3; ++i) renderFrame(app);  // warm-up: shader compiles, pool fills
-        std::vector<double> frames;
-        for (int i = 0; i < o.frames; ++i) {
-            glFinish();
-            const auto start = Clock::now();
-            renderFrame(app);
-            glFinish();
-            frames.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        }
-        gpu::GlPassTimer timer;
-        request.timer = &timer;
-        for (int i = 0; i < o.frames; ++i) renderFrame(app);
-        request.timer = nullptr;
-        nlohmann::json passes = nlohmann::json::object();
-        for (const auto& [name, samples] : timer.samples()) passes[name] = gpu::median(samples);
-        stats["frame_ms"] = gpu::median(frames);
-        stats["frame_ms_min"] = *std::min_element(frames.begin(), frames.end());
-        stats["frames"] = o.frames;
-        stats["passes_ms"] = passes;
-    }
-
+    if (!o.stats.empty()) measureFrames(app, o.frames, stats);
     auto& state = app.resource<render::RendererState>();
     const assets::RgbImage image = state.renderer->readOutput();
     if (o.floor) {  // right after the timed frames, in the same process: the scene's fixed yardstick
@@ -120,44 +162,12 @@ int run(const RenderOptions& o) {
     }
     const gpu::GlErrorReport errors = context->takeGlErrors();
     for (const auto& file : o.out) assets::writeImage(file, image, {o.exposure});
-
-    if (!o.stats.empty()) {
-        stats["scene"] = o.scene;
-        stats["width"] = width;
-        stats["height"] = height;
-        stats["time"] = session->time();
-        stats["camera"] = state.lastInput.camera.name;
-        stats["gl_renderer"] = context->renderer();
-        stats["gl_version"] = context->version();
-        stats["gl_errors"] = errors.count;
-        stats["active_passes"] = state.renderer->lastActivePasses();
-        if (const auto* media = app.world().tryResource<media::ecs::MediaRendererState>(); media && media->renderer) {
-            const auto& frame = app.world().resource<media::ecs::MediaFrame>();
-            stats["media_mode"] = media::mediaModeName(frame.settings.mode);
-            if (const auto quality = app.resource<Settings>().text("quality")) stats["quality"] = *quality;
-            stats["media_particles"] = media->renderer->stats().particles;
-            stats["media_slices"] = media->renderer->stats().slices;
-            stats["media_slice_views"] = media->renderer->stats().sliceViews;
-            // What the "auto" settings chose this frame.
-            stats["media_slice_resolution"] = media->renderer->stats().sliceResolution;
-            stats["media_scale_used"] = media->renderer->stats().mediaScale;
-            if (frame.settings.mode == media::MediaMode::Particles) {
-                stats["media_exact_lighting"] = media->renderer->stats().exactLighting;
-                stats["media_constant_source"] = media->renderer->stats().constantSource;
-            }
-            if (frame.settings.mode == media::MediaMode::Blocks) {
-                stats["media_blocks"] = media->renderer->stats().blocks;
-                stats["media_lamp_slice_particles"] = media->renderer->stats().lampSliceParticles;
-                stats["media_exactly_shaded_blocks"] = media->renderer->stats().exactlyShadedBlocks;
-            }
-        }
-        std::ofstream file(o.stats);
-        if (!file) throwInputError(o.stats, "", "", "cannot write the stats file");
-        file << stats.dump(2) << "\n";
-    }
+    stats["width"] = width;
+    stats["height"] = height;
+    if (!o.stats.empty()) writeStats(o, *session, *context, errors.count, stats);
     if (errors.count > 0) {
-        std::fprintf(stderr, "sandbox render: %llu GL error(s), first: %s\n",
-                     static_cast<unsigned long long>(errors.count), errors.first.c_str());
+        std::fprintf(stderr, "sandbox render: %llu GL error(s), first: %s\n", static_cast<unsigned long long>(errors.count),
+                     errors.first.c_str());
         return 1;
     }
     std::string outputs;
@@ -177,7 +187,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--out", options->out, "output image: .exr (linear radiance) or .png (sRGB); repeatable");
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
-    cmd->add_option("--mode", options->mode, "media mode: particles (default), blocks or billboards");
+    cmd->add_option("--mode", options->mode, "media mode: " + modeNames());
     cmd->add_option("--quality", options->quality, "fast, balanced (default) or exact");
     cmd->add_option("--budget-ms", options->budget,
                     "frame budget: walk the quality ladder and keep the lowest-error setting whose frames fit");

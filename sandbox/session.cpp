@@ -19,11 +19,11 @@ Session::Session(std::shared_ptr<const assets::Scene> scene, const SessionOption
     app_ = std::make_unique<ecs::App>();
     app_->insertResource<Settings>();
     app_->addPlugin<render::RenderPlugin>();
-    app_->addPlugin<media::ecs::MediaPlugin>();
+    app_->addPlugin<media::ecs::MediaPlugin>(options.techniques ? *options.techniques : media::builtInTechniques());
     for (const auto& assignment : options.settings) app_->resource<Settings>().assign(assignment);
     for (const auto& [assignment, origin] : options.options) app_->resource<Settings>().assign(assignment, origin);
     // Checked now, so a bad value is refused even for a scene the media plugin has nothing to draw in.
-    (void)media::ecs::readMediaSettings(&app_->resource<Settings>());
+    (void)media::ecs::readMediaSettings(app_->world());
     scene::spawnScene(app_->world(), scene_);
     scene::simulateTo(*app_, options.time);
 }
@@ -88,6 +88,12 @@ void parseSize(const std::string& text, int& width, int& height, const std::stri
     if (x == std::string::npos || !parse(std::string_view(text).substr(0, x), width) ||
         !parse(std::string_view(text).substr(x + 1), height))
         throwInputError(option, text, "", "expected WxH with each side in 1..16384, e.g. 1280x720");
+}
+
+std::string modeNames() {
+    std::string out;
+    for (const std::string& name : media::builtInTechniques().names()) out += (out.empty() ? "" : ", ") + name;
+    return out;
 }
 
 }  // namespace nimbus::sandbox

@@ -3,6 +3,7 @@
 // reference, bench and edit commands all start from one, so they all see the same state.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "nimbus/assets/scene.h"
 #include "nimbus/ecs/app.h"
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/technique.h"
 #include "nimbus/media/reference/reference_renderer.h"
 
 namespace nimbus::sandbox {
@@ -19,6 +21,7 @@ struct SessionOptions {
     double time = 0.0;
     std::vector<std::string> settings;  // KEY=VALUE from --set
     std::vector<std::pair<std::string, std::string>> options;  // (KEY=VALUE, origin) from options such as --mode
+    std::optional<media::TechniqueTable> techniques;  // the media modes offered; empty: the built-in ones
 };
 
 class Session {
@@ -66,6 +69,9 @@ std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::
 inline constexpr char kRenderDefaultQuality[] = "balanced";
 // Sets `quality` to `quality` unless the command line or the scene chose one.
 void useDefaultQuality(ecs::App& app, const std::string& quality);
+
+// The media modes of the built-in technique table, for help texts: "particles, blocks, ...".
+std::string modeNames();
 
 // Parses "WxH" (1..16384 each); throws InputError naming the option otherwise.
 void parseSize(const std::string& text, int& width, int& height, const std::string& option = "--size");

@@ -1,32 +1,33 @@
-// sandbox settings
-// Lists every setting `--set KEY=VALUE` and a scene's render block accept, with its help text, and
-// what each quality tier picks. The list is the App's own declarations, so it cannot drift.
+// sandbox settings [--schema]
+// Lists every setting `--set KEY=VALUE` and a scene's render block accept: its help text, what it
+// accepts, its default, and the modes and tiers it acts in. The list is the App's own
+// declarations (nimbus/base/setting_spec.h), so it cannot drift. --schema prints the JSON schema of
+// a scene's render block from the same declarations (docs/scene-format.schema.json holds it).
 #include <cstdio>
+
+#include <nlohmann/json.hpp>
 
 #include "commands.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/ecs/app.h"
 #include "nimbus/media/ecs/media_plugin.h"
 #include "nimbus/render/render_plugin.h"
+#include "settings_listing.h"
 
 namespace nimbus::sandbox {
 
 CommandRunner addSettingsCommand(CLI::App& app) {
-    app.add_subcommand("settings", "list the renderer's settings (--set KEY=VALUE, a scene's render block) and the quality tiers");
-    return [] {
+    auto* cmd = app.add_subcommand("settings", "list the renderer's settings (--set KEY=VALUE, a scene's render block) and where each acts");
+    auto schema = std::make_shared<bool>(false);
+    cmd->add_flag("--schema", *schema, "print the JSON schema of a scene's render block instead");
+    return [schema] {
         ecs::App host;
         host.insertResource<Settings>();
         host.addPlugin<render::RenderPlugin>();
         host.addPlugin<media::ecs::MediaPlugin>();
-        for (const Settings::Declaration& d : host.resource<Settings>().declarations())
-            std::printf("%-20s %s\n", d.key.c_str(), d.help.c_str());
-        std::printf("\nquality tiers (a setting given explicitly wins over its tier):\n");
-        for (const media::ecs::QualityPreset& preset : media::ecs::kQualityPresets) {
-            std::printf("  %-10s", preset.name);
-            if (preset.settings.empty()) std::printf(" every setting at its default");
-            for (const auto& [key, value] : preset.settings) std::printf(" %s=%s", key.c_str(), value.c_str());
-            std::printf("\n");
-        }
+        const Settings& settings = host.resource<Settings>();
+        if (*schema) std::printf("%s\n", renderBlockSchema(settings).dump(2).c_str());
+        else std::fputs(listSettings(settings).c_str(), stdout);
         return 0;
     };
 }

@@ -99,12 +99,16 @@ def tiers_section(runs, bench_dir):
     if not present:
         return []
     out = ["## Quality tiers", "",
-           "`--quality` (or a scene's `render.quality`) picks a preset of settings; anything set explicitly wins. "
-           "`sandbox settings` prints them:", "", "```"]
+           "`--quality` (or a scene's `render.quality`) picks each setting's value for the tier; anything set explicitly "
+           "wins. The settings a tier changes, as `sandbox settings` declares them:", "", "```"]
     settings_txt = os.path.join(bench_dir, "settings.txt")
     if os.path.exists(settings_txt):
-        text = open(settings_txt).read()
-        out += [l.rstrip() for l in text[text.find("quality tiers"):].splitlines() if l.strip()]
+        for line in open(settings_txt).read().splitlines():
+            key, _, rest = line.partition(" ")
+            default = rest[rest.find("; default ") + len("; default "):] if "; default " in rest else ""
+            default = default.split("; in ")[0]
+            if "balanced" in default or "fast" in default:
+                out.append("%-20s %s" % (key, default))
     out += ["```", "",
             "- `exact`: every correction per fragment (light integrated over each particle, exact chord integrals, "
             "neighbour order). The library's default.",

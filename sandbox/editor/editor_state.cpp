@@ -177,6 +177,13 @@ void EditorState::setMode(const std::string& mode) {
     setView(next);
 }
 
+void EditorState::setSetting(const std::string& key, const std::string& value) {
+    ViewSettings next = view_;
+    std::erase_if(next.settings, [&](const std::string& s) { return s.rfind(key + "=", 0) == 0; });
+    if (!value.empty()) next.settings.push_back(key + "=" + value);
+    setView(next);
+}
+
 void EditorState::setView(const ViewSettings& view) {
     replaceSession(buildSession(document_, time_, view));
     view_ = view;

@@ -68,6 +68,8 @@ public:
     const ViewSettings& view() const { return view_; }
     void setQuality(const std::string& quality);
     void setMode(const std::string& mode);
+    // Any declared setting as --set gives it; an empty value unsets it (back to the tier's).
+    void setSetting(const std::string& key, const std::string& value);
     void setView(const ViewSettings& view);  // refused settings leave the view as it was
 
     Session& session() { return *session_; }

@@ -224,7 +224,7 @@ TEST(SandboxRender, RefusesAnUnknownQualityInASceneNamingTheField) {
     const ProcessResult r = sandbox({"render", scene.string(), "--size", "32x18", "--out", (out / "x.png").string()});
     expectRefused(r);
     EXPECT_EQ(r.errLines().size(), 1u) << explain(r);
-    for (const char* part : {"render.quality", "turbo", "fast, balanced, exact"})
+    for (const char* part : {"render.quality", "turbo", "exact, balanced or fast"})
         EXPECT_NE(r.err.find(part), std::string::npos) << part << ": " << explain(r);
 }
 
@@ -260,11 +260,23 @@ TEST(SandboxRender, QualityIsReportedInTheStats) {
     }
 }
 
-TEST(SandboxSettings, ListsEveryTierAndSetting) {
+TEST(SandboxSettings, ListsEverySettingWithWhereItActs) {
     const ProcessResult r = sandbox({"settings"});
     ASSERT_EQ(r.exitCode, 0) << explain(r);
-    for (const char* key : {"quality", "mode", "lighting", "slice_deposit", "media_scale", "shadow_map_size", "  fast", "  balanced", "  exact"})
+    for (const char* key : {"quality", "mode", "lighting", "slice_deposit", "media_scale", "shadow_map_size", "in mode blocks",
+                            "tier exact", "(fast: 16)", "particles, blocks, raymarch or billboards"})
         EXPECT_NE(r.out.find(key), std::string::npos) << key << " missing from:\n" << r.out;
+}
+
+// docs/scene-format.schema.json's render block is what `sandbox settings --schema` prints from the
+// declarations, so the schema, the help and the parser cannot disagree.
+TEST(SandboxSettings, TheDocumentedSchemaIsTheGeneratedOne) {
+    const ProcessResult r = sandbox({"settings", "--schema"});
+    ASSERT_EQ(r.exitCode, 0) << explain(r);
+    std::ifstream in(NIMBUS_DOCS_DIR "/scene-format.schema.json");
+    ASSERT_TRUE(in);
+    const nlohmann::json documented = nlohmann::json::parse(in)["$defs"]["render"];
+    EXPECT_EQ(documented, nlohmann::json::parse(r.out)) << "regenerate with tools/update_render_schema.py";
 }
 
 TEST(SandboxRender, HelpPrintsTheUsage) {

@@ -18,7 +18,6 @@
 namespace nimbus::stability {
 namespace {
 
-using media::MediaMode;
 
 constexpr double kStep = 1.0 / 60.0;  // the App's fixed step (docs/scene-format.md §3.3)
 
@@ -64,8 +63,8 @@ TEST_F(StabilityTest, ParticlesDyingOutStayFinite) {
         EXPECT_EQ(run.stats.particles, 20u);
         EXPECT_EQ(run.nonfinite, 0u);
         EXPECT_EQ(run.glErrors.count, 0u) << run.glErrors.first;
-        EXPECT_LE(run.error.relRmse, kDefaultErrorBound) << media::mediaModeName(mode);
-        std::printf("[stability] zero_particles at 0.1 s (20 alive), %s: rel_rmse %.4g\n", media::mediaModeName(mode),
+        EXPECT_LE(run.error.relRmse, kDefaultErrorBound) << mediaModeName(mode);
+        std::printf("[stability] zero_particles at 0.1 s (20 alive), %s: rel_rmse %.4g\n", mediaModeName(mode),
                     run.error.relRmse);
     }
 
@@ -78,8 +77,8 @@ TEST_F(StabilityTest, ParticlesDyingOutStayFinite) {
         EXPECT_EQ(run.stats.particles, 0u);
         EXPECT_EQ(run.nonfinite, 0u);
         EXPECT_EQ(run.glErrors.count, 0u) << run.glErrors.first;
-        EXPECT_LE(run.error.relRmse, kDefaultErrorBound) << media::mediaModeName(mode);
-        std::printf("[stability] zero_particles at 0.5 s (all dead), %s: rel_rmse %.4g\n", media::mediaModeName(mode),
+        EXPECT_LE(run.error.relRmse, kDefaultErrorBound) << mediaModeName(mode);
+        std::printf("[stability] zero_particles at 0.5 s (all dead), %s: rel_rmse %.4g\n", mediaModeName(mode),
                     run.error.relRmse);
     }
     // The media renderer no longer takes part in the frame.
@@ -170,7 +169,7 @@ TEST_F(StabilityTest, MillionParticlesMemoryIsBounded) {
     }
     sandbox::Session session({sceneDirectory() / kMillion.scene, kStep, {}});
     for (MediaMode mode : {MediaMode::Particles, MediaMode::Blocks}) {
-        const char* name = media::mediaModeName(mode);
+        const char* name = mediaModeName(mode);
         const auto before = static_cast<double>(settledResidentBytes());
         for (int frame = 0; frame < 2; ++frame) (void)renderMode(session, mode, kMillion.width, kMillion.height, "");
         const auto warm = static_cast<double>(settledResidentBytes());

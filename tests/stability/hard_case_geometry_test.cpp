@@ -10,7 +10,6 @@
 namespace nimbus::stability {
 namespace {
 
-using media::MediaMode;
 
 // ── Camera inside the cloud ──────────────────────────────────────────────────────────────────
 // The eye sits in the middle of a cloud of 120 particles of radius 1–1.8 m (inside several of

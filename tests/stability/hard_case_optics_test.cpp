@@ -15,7 +15,6 @@
 namespace nimbus::stability {
 namespace {
 
-using media::MediaMode;
 
 // ── Optical depth ~1e4: transmittance underflow ──────────────────────────────────────────────
 // A cloud whose densest column has τ ≈ 1e4 (σ ≈ 5e3 /m), over a ground, in the sun.

@@ -28,7 +28,7 @@ namespace {
 class RepeatabilityTest : public StabilityTest {
 protected:
     // The largest rel-RMSE between the first frame and each of `frames` − 1 more of the same state.
-    static double worstRepeatChange(media::MediaMode mode, int frames) {
+    static double worstRepeatChange(MediaMode mode, int frames) {
         sandbox::Session session({sceneDirectory() / "light_directions.gltf", 0.0, {}});
         const assets::RgbImage first = renderMode(session, mode, 96, 54, "antiparallel");
         double worst = 0.0;
@@ -37,14 +37,14 @@ protected:
             worst = std::max(worst, media::reference::compareImages(again, first).relRmse);
         }
         EXPECT_EQ(context().takeGlErrors().count, 0u);
-        std::printf("[stability] %s: worst change over %d frames %.3g\n", media::mediaModeName(mode), frames, worst);
+        std::printf("[stability] %s: worst change over %d frames %.3g\n", mediaModeName(mode), frames, worst);
         return worst;
     }
 };
 
-TEST_F(RepeatabilityTest, ParticlesFramesAreIdentical) { EXPECT_EQ(worstRepeatChange(media::MediaMode::Particles, 8), 0.0); }
+TEST_F(RepeatabilityTest, ParticlesFramesAreIdentical) { EXPECT_EQ(worstRepeatChange(MediaMode::Particles, 8), 0.0); }
 
-TEST_F(RepeatabilityTest, BlocksFramesAreIdentical) { EXPECT_EQ(worstRepeatChange(media::MediaMode::Blocks, 8), 0.0); }
+TEST_F(RepeatabilityTest, BlocksFramesAreIdentical) { EXPECT_EQ(worstRepeatChange(MediaMode::Blocks, 8), 0.0); }
 
 }  // namespace
 }  // namespace nimbus::stability

@@ -111,7 +111,7 @@ protected:
         EXPECT_EQ(inputs->inputs.lights.size(), 1u);
         const assets::ResolvedLight& light = inputs->inputs.lights.front();
         const glm::dvec3 ambient = session.scene().environment.ambient;
-        const assets::RgbImage particles = renderMode(session, media::MediaMode::Particles, width, height, "");
+        const assets::RgbImage particles = renderMode(session, MediaMode::Particles, width, height, "");
         std::vector<PixelCheck> checks;
         for (int y = cy - 2; y <= cy + 2; ++y) {
             for (int x = cx - 2; x <= cx + 2; ++x) {

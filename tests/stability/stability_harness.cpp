@@ -69,8 +69,8 @@ double boundedError(const CaseRun& run, Tier tier) {
     return run.referenceSparsity >= kSparseImageRatio ? m.rmsRelativeError : m.error.relRmse;
 }
 
-double boundedError(const CaseRun& run, media::MediaMode mode) {
-    return boundedError(run, mode == media::MediaMode::Blocks ? Tier::Blocks : Tier::Particles);
+double boundedError(const CaseRun& run, MediaMode mode) {
+    return boundedError(run, mode == MediaMode::Blocks ? Tier::Blocks : Tier::Particles);
 }
 
 assets::RgbImage renderReference(sandbox::Session& session, const std::string& camera, int width, int height,
@@ -99,7 +99,7 @@ media::MediaFrameStats mediaStats(sandbox::Session& session) {
 ModeRun runTier(gpu::Context& context, sandbox::Session& session, const HardCase& c, Tier tier, const assets::RgbImage& referenceImage) {
     ModeRun run;
     run.tier = tier;
-    run.mode = tier == Tier::Blocks ? media::MediaMode::Blocks : media::MediaMode::Particles;
+    run.mode = tier == Tier::Blocks ? MediaMode::Blocks : MediaMode::Particles;
     (void)context.takeGlErrors();
     run.image = renderTier(session, tier, c.width, c.height, c.camera);
     const assets::RgbImage second = renderTier(session, tier, c.width, c.height, c.camera);
@@ -194,8 +194,8 @@ void expectFiniteAndClean(const HardCase& c, const CaseRun& run) {
     }
 }
 
-void expectWithinBound(const HardCase& c, const CaseRun& run, media::MediaMode mode, double bound) {
-    expectWithinBound(c, run, mode == media::MediaMode::Blocks ? Tier::Blocks : Tier::Particles, bound);
+void expectWithinBound(const HardCase& c, const CaseRun& run, MediaMode mode, double bound) {
+    expectWithinBound(c, run, mode == MediaMode::Blocks ? Tier::Blocks : Tier::Particles, bound);
 }
 
 void expectWithinBound(const HardCase& c, const CaseRun& run, Tier tier, double bound) {

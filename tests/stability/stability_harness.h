@@ -33,6 +33,10 @@
 
 namespace nimbus::stability {
 
+// The two modes every hard case runs in, by their names in the technique table.
+enum class MediaMode { Particles, Blocks };
+inline const char* mediaModeName(MediaMode mode) { return mode == MediaMode::Blocks ? "blocks" : "particles"; }
+
 // The reference's default tolerance (ReferenceSettings) and the bound on how much halving it may
 // change the image: the judge must be converged far below the real-time errors it judges.
 inline constexpr double kReferenceTolerance = 1e-4;
@@ -64,7 +68,7 @@ inline constexpr Tier kAllTiers[] = {Tier::Particles, Tier::Blocks, Tier::Balanc
 
 struct ModeRun {
     Tier tier = Tier::Particles;
-    media::MediaMode mode = media::MediaMode::Particles;
+    MediaMode mode = MediaMode::Particles;
     assets::RgbImage image;              // the first frame
     media::reference::ImageMetrics error;  // first frame against the reference
     double rmsRelativeError = 0.0;       // RMS(first frame − reference) / RMS(reference)
@@ -83,7 +87,7 @@ struct CaseRun {
     std::size_t referenceHalfNonfinite = 0;
     std::size_t particleCount = 0;       // what both renderers drew
     ModeRun particles, blocks, balanced, fast;
-    const ModeRun& mode(media::MediaMode m) const { return m == media::MediaMode::Blocks ? blocks : particles; }
+    const ModeRun& mode(MediaMode m) const { return m == MediaMode::Blocks ? blocks : particles; }
     const ModeRun& tier(Tier t) const {
         return t == Tier::Blocks ? blocks : t == Tier::Balanced ? balanced : t == Tier::Fast ? fast : particles;
     }
@@ -106,7 +110,7 @@ double sparsity(const assets::RgbImage& image);
 // luminance, reads a relative error e of the few lit pixels as e·RMS/mean (one lit pixel of
 // 160×90: 120·e, so a 0.2% error fails 15%), and RMS(error) / RMS(reference) reads it as e. The
 // harness measures the reference's own convergence that way for the same reason.
-double boundedError(const CaseRun& run, media::MediaMode mode);
+double boundedError(const CaseRun& run, MediaMode mode);
 double boundedError(const CaseRun& run, Tier tier);
 
 // The reference of a session's current state at width×height through `camera`.
@@ -116,15 +120,15 @@ assets::RgbImage renderReference(sandbox::Session& session, const std::string& c
 // One real-time frame in `tier` (sets the session's "mode" and "quality" settings).
 assets::RgbImage renderTier(sandbox::Session& session, Tier tier, int width, int height, const std::string& camera);
 
-inline Tier exactTier(media::MediaMode mode) { return mode == media::MediaMode::Blocks ? Tier::Blocks : Tier::Particles; }
+inline Tier exactTier(MediaMode mode) { return mode == MediaMode::Blocks ? Tier::Blocks : Tier::Particles; }
 // One frame of the exact tier in `mode`.
-inline assets::RgbImage renderMode(sandbox::Session& session, media::MediaMode mode, int width, int height, const std::string& camera) {
+inline assets::RgbImage renderMode(sandbox::Session& session, MediaMode mode, int width, int height, const std::string& camera) {
     return renderTier(session, exactTier(mode), width, height, camera);
 }
 
 // One tier of the session's current state (two frames) against `reference`.
 ModeRun runTier(gpu::Context& context, sandbox::Session& session, const HardCase& c, Tier tier, const assets::RgbImage& reference);
-inline ModeRun runMode(gpu::Context& context, sandbox::Session& session, const HardCase& c, media::MediaMode mode,
+inline ModeRun runMode(gpu::Context& context, sandbox::Session& session, const HardCase& c, MediaMode mode,
                        const assets::RgbImage& reference) {
     return runTier(context, session, c, exactTier(mode), reference);
 }
@@ -166,7 +170,7 @@ private:
 //     particles.
 //   expectWithinBound: rel-RMSE of `mode` (the exact tier) or `tier` against the reference <= bound.
 void expectFiniteAndClean(const HardCase& c, const CaseRun& run);
-void expectWithinBound(const HardCase& c, const CaseRun& run, media::MediaMode mode, double bound);
+void expectWithinBound(const HardCase& c, const CaseRun& run, MediaMode mode, double bound);
 void expectWithinBound(const HardCase& c, const CaseRun& run, Tier tier, double bound);
 
 }  // namespace nimbus::stability

@@ -29,7 +29,6 @@
 namespace nimbus::stability {
 namespace {
 
-using media::MediaMode;
 
 // "<variant stem>/<tier>" → why it is beyond its bound today (the report's finding).
 const std::map<std::string, std::string> kBeyondBound = {

@@ -1,5 +1,6 @@
 #include "nimbus/render/render_plugin.h"
 
+#include "nimbus/base/quality_tier.h"
 #include "nimbus/base/settings.h"
 
 #include "nimbus/scene/components.h"
@@ -7,6 +8,16 @@
 
 namespace nimbus::render {
 namespace {
+
+// The renderer's keys: shadow filtering, which the fast tier trades for speed.
+const SettingField<RenderSettings> kRenderFields[] = {
+    {{.key = "shadow_map_size", .help = "mesh shadow map resolution per light view", .type = SettingType::Integer, .min = 64,
+      .max = 8192, .defaultValue = "2048 (fast: 1024)"},
+     &setInteger<&RenderSettings::shadowMapSize>},
+    {{.key = "pcf_radius", .help = "mesh shadow PCF kernel radius in texels", .type = SettingType::Integer, .min = 0, .max = 4,
+      .defaultValue = "1: 3x3 taps (fast: 0)"},
+     &setInteger<&RenderSettings::pcfRadius>},
+};
 
 void renderFrame(ecs::World& world) {
     auto& request = world.resource<RenderRequest>();
@@ -37,17 +48,17 @@ void RenderPlugin::build(ecs::App& app) {
     app.insertResource<RendererState>();
     if (!app.hasResource<Settings>()) app.insertResource<Settings>();
     auto& settings = app.resource<Settings>();
-    settings.declare("shadow_map_size", "mesh shadow map resolution per light view (default 2048)");
-    settings.declare("pcf_radius", "mesh shadow PCF kernel radius in texels, 0..4 (default 1: 3x3 taps)");
+    settings.declare(qualityTierSpec());
+    for (const SettingSpec& spec : specsOf(kRenderFields)) settings.declare(spec);
     app.addSystem({.name = kRenderFrameSystem, .phase = ecs::phases::kRender}, renderFrame);
 }
 
 void readRenderSettings(const Settings& settings, RenderSettings& out) {
-    // Unset keys go back to their defaults: a preset switched off must not leave its values behind.
-    const auto shadowMapSize = settings.integer("shadow_map_size", 64, 8192);
-    const auto pcfRadius = settings.integer("pcf_radius", 0, 4);
-    out.shadowMapSize = shadowMapSize ? static_cast<int>(*shadowMapSize) : 0;
-    out.pcfRadius = pcfRadius ? static_cast<int>(*pcfRadius) : -1;
+    // Every frame from the tier: a tier switched off must not leave its values behind.
+    const bool fast = readQualityTier(settings) == QualityTier::Fast;
+    out.shadowMapSize = fast ? 1024 : 0;
+    out.pcfRadius = fast ? 0 : -1;
+    out = readFields<RenderSettings>(settings, kRenderFields, out);
 }
 
 FrameInput gatherFrameInput(ecs::World& world, const RenderSettings& settings, std::string_view camera,

@@ -229,7 +229,7 @@ void EditorApp::applyBudget() {
     ViewSettings view = state_->view();
     for (const auto& rung : media::ecs::kQualityLadder) {
         if (choice.rung != rung.name) continue;
-        for (const auto& [key, value] : rung.settings) {
+        for (const auto& [key, value] : rung.assignments()) {
             if (key == "quality") {
                 view.quality = value;
                 continue;

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
         world.set(mini::SceneRequest{options.scene, options.time});
         world.set(mini::RenderRequest{options.width, options.height, options.out, options.mediaOut, options.standardDepth});
         nimbus::media::MediaRenderSettings media;
-        if (!options.mode.empty()) media.mode = nimbus::media::parseMediaMode(options.mode, "--mode");
+        media.mode = options.mode;  // MediaRenderer::prepare refuses a mode its table does not have
         media.mediaScale = options.mediaScale;
         world.set(mini::MediaSettings{media});
         world.import<mini::TransformModule>();

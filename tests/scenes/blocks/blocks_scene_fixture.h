@@ -27,7 +27,7 @@ inline assets::RgbImage renderRealtime(const std::filesystem::path& scene, int w
     assets::RgbImage image = session.renderRealtime(width, height);
     if (blocks != nullptr) {
         const auto& state = session.app().resource<media::ecs::MediaRendererState>();
-        *blocks = state.renderer ? state.renderer->stats().blocks : -1;
+        *blocks = state.renderer ? static_cast<int>(state.renderer->stats().value("blocks", -1)) : -1;
     }
     return image;
 }

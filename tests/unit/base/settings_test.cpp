@@ -1,67 +1,131 @@
-// Tests engine/base/src/settings.cpp: explicit values, scene defaults and presets, and where each
-// value says it came from.
+// Tests engine/base/src/settings.cpp: keys declared once with their specs, values checked against
+// them with messages that name where a value came from, scene defaults that yield to the command
+// line, and typed settings read on top of a tier's.
 #include "nimbus/base/settings.h"
 
 #include <gtest/gtest.h>
 
 #include "nimbus/base/error.h"
+#include "nimbus/base/quality_tier.h"
 
 namespace nimbus {
 namespace {
 
-Settings withQualityPresets() {
+struct Toy {
+    int slices = 0;
+    float scale = 0.0f;
+    bool soft = true;
+    enum class Shade : unsigned char { Seam, Smooth } shade = Shade::Seam;
+};
+
+const SettingField<Toy> kToyFields[] = {
+    {{.key = "slices", .help = "slices", .type = SettingType::Integer, .min = 4, .max = 32}, &setInteger<&Toy::slices>},
+    {{.key = "scale", .help = "scale", .type = SettingType::Number, .min = 0.0625, .max = 1.0, .words = {"auto"}},
+     [](Toy& t, const SettingValue& v) { t.scale = v.isWord("auto") ? -1.0f : static_cast<float>(v.number); }},
+    {{.key = "soft", .help = "soft", .type = SettingType::Boolean, .tiers = kTierExact}, &setBoolean<&Toy::soft>},
+    {{.key = "shade", .help = "shade", .type = SettingType::Choice, .words = {"seam", "smooth"}}, &setChoice<&Toy::shade>},
+};
+
+Settings toySettings() {
     Settings s;
-    s.declare("quality", "");
-    s.declare("slices", "");
-    s.declare("media_scale", "");
-    s.definePreset("quality", "fast", {{"slices", "16"}, {"media_scale", "0.5"}});
-    s.definePreset("quality", "exact", {});
+    s.declare(qualityTierSpec());
+    for (const SettingSpec& spec : specsOf(kToyFields)) s.declare(spec);
     return s;
 }
 
-TEST(SettingsPreset, SuppliesWhatNothingSet) {
-    Settings s = withQualityPresets();
-    EXPECT_FALSE(s.integer("slices", 4, 32).has_value());  // no quality chosen: no preset
-    s.set("quality", "fast", "--quality");
-    EXPECT_EQ(s.integer("slices", 4, 32), 16);
-    EXPECT_EQ(s.origin("slices"), "quality=fast (from --quality)");
-    EXPECT_FALSE(s.has("slices"));  // a preset's value is not a set one
-}
-
-TEST(SettingsPreset, ExplicitValuesWin) {
-    Settings s = withQualityPresets();
-    s.set("quality", "fast");
-    s.set("slices", "8", "--set");
-    EXPECT_EQ(s.integer("slices", 4, 32), 8);
-    EXPECT_EQ(s.number("media_scale", 0.0, 1.0), 0.5);
-}
-
-TEST(SettingsPreset, SwitchingTheQualitySwitchesEverythingItPicked) {
-    Settings s = withQualityPresets();
-    s.set("quality", "fast");
-    ASSERT_TRUE(s.number("media_scale", 0.0, 1.0).has_value());
-    s.set("quality", "exact");
-    EXPECT_FALSE(s.number("media_scale", 0.0, 1.0).has_value());
-    EXPECT_EQ(s.presetValues("quality"), (std::vector<std::string>{"fast", "exact"}));
-}
-
-TEST(SettingsPreset, APresetValueOutOfRangeNamesThePreset) {
-    Settings s = withQualityPresets();
-    s.set("quality", "fast", "scene.gltf: render.quality");
+std::string refusal(const Settings& s, const std::string& key) {
     try {
-        (void)s.integer("slices", 20, 32);
-        FAIL() << "expected an InputError";
+        (void)s.read(key);
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("quality=fast (from scene.gltf: render.quality)"), std::string::npos) << e.what();
+        return e.what();
+    }
+    return "";
+}
+
+TEST(Settings, ExplicitValuesApplyOnTopOfTheTiersStruct) {
+    Settings s = toySettings();
+    s.set("slices", "8");
+    s.set("shade", "smooth");
+    const Toy t = readFields<Toy>(s, kToyFields, Toy{.slices = 16, .scale = 0.5f});
+    EXPECT_EQ(t.slices, 8);
+    EXPECT_EQ(t.scale, 0.5f) << "unset keys keep the tier's value";
+    EXPECT_EQ(t.shade, Toy::Shade::Smooth);
+    s.set("scale", "auto");
+    EXPECT_EQ(readFields<Toy>(s, kToyFields, Toy{}).scale, -1.0f) << "a word reaches the applier";
+}
+
+TEST(Settings, ValuesOutsideTheSpecAreRefusedNamingOriginKeyAndRange) {
+    Settings s = toySettings();
+    s.set("slices", "999", "scene.gltf: node \"fog\": render.slices");
+    const std::string message = refusal(s, "slices");
+    EXPECT_NE(message.find("scene.gltf: node \"fog\": render.slices"), std::string::npos) << message;
+    EXPECT_NE(message.find("4..32"), std::string::npos) << message;
+    s.set("scale", "1e300");
+    EXPECT_LT(refusal(s, "scale").size(), 160u) << "a range message stays one short line: " << refusal(s, "scale");
+    s.set("scale", "nan");
+    EXPECT_NE(refusal(s, "scale").find("not a finite number"), std::string::npos);
+    s.set("shade", "bumpy");
+    EXPECT_NE(refusal(s, "shade").find("seam or smooth"), std::string::npos) << refusal(s, "shade");
+    EXPECT_THROW(s.validate(), InputError) << "validate checks every key that was set";
+}
+
+TEST(Settings, BooleansAreOnOffOrTrueFalseOnly) {
+    Settings s = toySettings();
+    for (const char* accepted : {"on", "off", "true", "false"}) {
+        s.set("soft", accepted);
+        EXPECT_NO_THROW((void)s.read("soft")) << accepted;
+    }
+    for (const char* refused : {"yes", "1", "ON", ""}) {
+        s.set("soft", refused);
+        EXPECT_THROW((void)s.read("soft"), InputError) << refused;
     }
 }
 
-TEST(SettingsPreset, SceneDefaultsYieldToTheCommandLine) {
-    Settings s = withQualityPresets();
+TEST(Settings, AnUndeclaredKeyIsRefusedListingTheKnownOnes) {
+    Settings s = toySettings();
+    try {
+        s.set("slice", "8");
+        FAIL() << "an undeclared key was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("slices"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Settings, DeclaringAKeyTwiceWithAnotherShapeIsAProgrammingError) {
+    Settings s = toySettings();
+    EXPECT_NO_THROW(s.declare(kToyFields[0].spec));
+    SettingSpec other = kToyFields[0].spec;
+    other.max = 64;
+    EXPECT_THROW(s.declare(other), std::logic_error);
+}
+
+TEST(Settings, SceneDefaultsYieldToTheCommandLine) {
+    Settings s = toySettings();
     s.set("quality", "exact", "--quality");
     s.setDefault("quality", "fast", "scene.gltf: render.quality");
     EXPECT_EQ(s.text("quality"), "exact");
     EXPECT_EQ(s.origin("quality"), "--quality");
+    EXPECT_EQ(readQualityTier(s), QualityTier::Exact);
+}
+
+TEST(Settings, TheTierIsExactUnlessSet) {
+    Settings s = toySettings();
+    EXPECT_EQ(readQualityTier(s), QualityTier::Exact);
+    s.set("quality", "fast");
+    EXPECT_EQ(readQualityTier(s), QualityTier::Fast);
+    EXPECT_EQ(readQualityTier(Settings{}), QualityTier::Exact) << "nothing declared quality";
+}
+
+TEST(Settings, TheDescriptionSaysWhereAKeyActs) {
+    SettingSpec spec = kToyFields[2].spec;
+    spec.modes = {"particles"};
+    const std::string line = describeSetting(spec);
+    EXPECT_NE(line.find("on or off"), std::string::npos) << line;
+    EXPECT_NE(line.find("particles"), std::string::npos) << line;
+    EXPECT_NE(line.find("exact"), std::string::npos) << line;
+    EXPECT_TRUE(settingActsIn(spec, "particles", kTierExact));
+    EXPECT_FALSE(settingActsIn(spec, "particles", kTierFast));
+    EXPECT_FALSE(settingActsIn(spec, "blocks", kTierExact));
 }
 
 }  // namespace

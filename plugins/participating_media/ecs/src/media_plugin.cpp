@@ -51,7 +51,7 @@ void applyRenderOverrides(World& world, const assets::Scene& scene, const MediaS
             settings->setDefault(it.key(), value, origin);
         }
     }
-    (void)readMediaSettings(settings);  // a bad value is refused at load, naming the node and field
+    (void)readMediaSettings(world);  // a bad value is refused at load, naming the node and field
 }
 
 void spawnMedia(World& world, const assets::Scene& scene) {
@@ -103,7 +103,7 @@ void gatherSystem(World& world) {
     auto& frame = world.resource<MediaFrame>();
     frame.particles.clear();
     if (world.count<MediumComponent>() == 0) return;
-    frame.settings = readMediaSettings(world.tryResource<Settings>());
+    frame.settings = readMediaSettings(world);
     gatherParticles(world, frame.particles);
 }
 
@@ -116,7 +116,7 @@ void renderSystem(World& world) {
     const bool active = !frame.particles.empty();
     if (!active && !state.renderer) return;
     if (!state.renderer) {
-        state.renderer = std::make_unique<MediaRenderer>();
+        state.renderer = std::make_unique<MediaRenderer>(world.resource<MediaTechniques>().table);
         state.extension = std::make_unique<MediaRenderExtension>(*state.renderer);
     }
     auto registered = std::find(list.begin(), list.end(), state.extension.get());
@@ -127,55 +127,25 @@ void renderSystem(World& world) {
 
 }  // namespace
 
-namespace {
-
-bool isQuality(const std::string& text) {
-    return std::any_of(std::begin(kQualityPresets), std::end(kQualityPresets), [&](const QualityPreset& p) { return text == p.name; });
+std::vector<std::pair<std::string, std::string>> QualityRung::assignments() const {
+    std::vector<std::pair<std::string, std::string>> out{{"quality", qualityTierName(tier)}};
+    if (mediaScale > 0.0f) out.emplace_back("media_scale", formatSettingNumber(mediaScale));
+    return out;
 }
 
-}  // namespace
-
-MediaRenderSettings readMediaSettings(const Settings* settings) {
-    MediaRenderSettings s;
-    if (settings == nullptr) return s;
-    if (auto v = settings->text("quality"); v && !isQuality(*v))
-        throwInputError(settings->origin("quality"), *v, "", "unknown quality (known: fast, balanced, exact)");
-    if (auto v = settings->text("mode")) s.mode = parseMediaMode(*v, settings->origin("mode"));
-    if (auto v = settings->integer("slices", kMinSlices, kMaxSlices)) s.slices = static_cast<int>(*v);
-    if (settings->text("slice_resolution") == "auto") {
-        const auto detail = settings->number("slice_detail", 0.25, 16.0);
-        s.sliceTexelsPerRadius = detail ? static_cast<float>(*detail) : 3.0f;
-    } else if (auto v = settings->integer("slice_resolution", 16, 4096)) {
-        s.sliceResolution = static_cast<int>(*v);
-    }
-    if (auto v = settings->text("lighting")) {
-        if (*v == "fragment") s.lighting = ParticleLighting::Fragment;
-        else if (*v == "particle") s.lighting = ParticleLighting::Particle;
-        else if (*v == "particle_exact") s.lighting = ParticleLighting::ParticleExact;
-        else throwInputError(settings->origin("lighting"), *v, "", "unknown lighting (known: fragment, particle, particle_exact)");
-    }
-    if (settings->text("slice_deposit") == "auto") s.sliceDeposit = SliceDeposit::Auto;
-    else if (auto v = settings->boolean("slice_deposit")) s.sliceDeposit = *v ? SliceDeposit::On : SliceDeposit::Off;
-    if (auto v = settings->boolean("exact_near_lamps")) s.exactNearLamps = *v;
-    if (auto v = settings->boolean("soft_particles")) s.softParticles = *v;
-    if (auto v = settings->boolean("layer_light")) s.layerLight = *v;
-    if (auto v = settings->integer("blocks", 1, 1 << 20)) s.blocks = static_cast<int>(*v);
-    if (auto v = settings->number("impostor_scale", 0.05, 4.0)) s.impostorScale = static_cast<float>(*v);
-    if (settings->text("media_scale") == "auto") s.mediaScaleAuto = true;
-    else if (auto v = settings->number("media_scale", 0.0625, 1.0)) s.mediaScale = static_cast<float>(*v);
-    if (auto v = settings->number("upsample_threshold", 1e-4, 10.0)) s.upsampleThreshold = static_cast<float>(*v);
-    if (auto v = settings->boolean("instancing")) s.instancing = *v;
-    if (auto v = settings->integer("voxels", 4, 256)) s.voxels = static_cast<int>(*v);
-    if (auto v = settings->integer("raymarch_steps", 4, 4096)) s.raymarchSteps = static_cast<int>(*v);
-    if (auto v = settings->text("block_shading")) {
-        if (*v == "smooth") s.blockShading = BlockShading::Smooth;
-        else if (*v == "seam") s.blockShading = BlockShading::Seam;
-        else if (*v == "exact") s.blockShading = BlockShading::Exact;
-        else throwInputError(settings->origin("block_shading"), *v, "", "unknown block shading (known: smooth, seam, exact)");
-    }
-    return s;
+MediaRenderSettings readMediaSettings(const Settings* settings, const TechniqueTable* techniques) {
+    const TechniqueTable builtIn = techniques ? TechniqueTable{} : builtInTechniques();
+    const TechniqueTable& table = techniques ? *techniques : builtIn;
+    if (settings == nullptr) return mediaSettingsForTier(QualityTier::Exact, table);
+    return media::readMediaSettings(*settings, table);
 }
 
+MediaRenderSettings readMediaSettings(World& world) {
+    const TechniqueTable& table = world.resource<MediaTechniques>().table;
+    const auto* settings = world.tryResource<Settings>();
+    if (settings == nullptr) return mediaSettingsForTier(QualityTier::Exact, table);
+    return media::readMediaSettings(*settings, table);
+}
 
 void gatherParticles(World& world, ParticleSet& out) {
     // Static clouds then emitters, each in glTF node order, as media::particlesAtTime does: views
@@ -205,27 +175,8 @@ void MediaPlugin::build(nimbus::ecs::App& app) {
     app.insertResource<MediaFrame>();
     app.insertResource<MediaRendererState>();
     if (!app.hasResource<Settings>()) app.insertResource<Settings>();
-    auto& settings = app.resource<Settings>();
-    settings.declare("quality", "fast, balanced or exact (the library's default; sandbox render's is balanced): the settings each picks are in docs/PERFORMANCE.md");
-    for (const QualityPreset& preset : kQualityPresets)
-        settings.definePreset("quality", preset.name, {preset.settings.begin(), preset.settings.end()});
-    settings.declare("mode", "media mode: particles (default), blocks, raymarch (a voxel grid ray-marched per pixel), or billboards (the game-industry yardstick: flat, unshadowed sprites)");
-    settings.declare("slices", "light slices per light view, 4..32 (default: chosen from the medium)");
-    settings.declare("slice_resolution", "texels per side of a light slice, or auto (chosen from the particles' size as the light sees them; see slice_detail); default 256");
-    settings.declare("lighting", "particles mode: where light is evaluated: fragment (default, exact), particle (per particle, linear across it) or particle_exact");
-    settings.declare("slice_detail", "with slice_resolution=auto: slice texels across the median particle's radius, 0.25..16 (default 3)");
-    settings.declare("slice_deposit", "light slices drawn as one float per particle and slab, then summed: on, off (default) or auto (on unless a point or spot light's views are among them)");
-    settings.declare("exact_near_lamps", "with lighting=particle or particle_exact: shade per fragment while a point or spot light lies inside the medium (a particle with a central column over 0.1): on or off (default)");
-    settings.declare("soft_particles", "clip particles at opaque surfaces: on (default) or off (billboard plane test)");
-    settings.declare("layer_light", "particles mode: light transmittance integrated over each particle: on (default) or off (one point, faster)");
-    settings.declare("blocks", "blocks mode: number of particle blocks (default: round(2 sqrt(particles)), more in optically thick media or around a lamp inside them)");
-    settings.declare("impostor_scale", "blocks mode: impostor texels per covered pixel, 0.05..4 (default 0.5)");
-    settings.declare("media_scale", "resolution of the media pass relative to the frame, e.g. 1, 0.5, 0.25, or auto (where the particles cover the image more than 2.5 times over, 1/4 to 1/2 keeping 8 texels across a typical billboard); default 1");
-    settings.declare("instancing", "blocks mode: build the cloud from one block prototype instanced at every block (default off)");
-    settings.declare("voxels", "raymarch mode: voxels along the grid's longest side, 4..256 (default: a voxel per third of the small particles' radius, at most 96)");
-    settings.declare("raymarch_steps", "raymarch mode: most samples per ray, 4..4096 (default 128)");
-    settings.declare("block_shading", "blocks mode, where a mesh is seen in the medium: seam (default: blocks shaded from their particles with the compositing order corrected near the mesh), smooth (faster there, but the mesh can show a seam) or exact (as seam over those blocks' whole rectangles; slowest)");
-    settings.declare("upsample_threshold", "offscreen media: relative depth difference treated as an edge (default 0.2)");
+    app.insertResource<MediaTechniques>(MediaTechniques{techniques_});
+    declareMediaSettings(app.resource<Settings>(), techniques_);
     app.resource<scene::SceneSpawners>().add("media", spawnMedia);
     app.addSystem({.name = kEmitSystem, .phase = nimbus::ecs::phases::kSimulate, .after = {scene::kAnimateSystem}}, emitSystem);
     app.addSystem({.name = kLightSliceSystem, .phase = nimbus::ecs::phases::kPrepare}, gatherSystem);

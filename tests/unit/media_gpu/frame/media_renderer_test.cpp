@@ -1,4 +1,4 @@
-// frame/media_renderer.cpp: the settings' defaults, and splatFootprint and automaticMediaScale,
+// frame/media_settings.cpp's defaults, and common/medium_footprint.cpp: splatFootprint and automaticMediaScale,
 // what media_scale=auto is chosen from.
 #include <gtest/gtest.h>
 
@@ -57,14 +57,12 @@ TEST(AutomaticMediaScale, KeepsEightTexelsAcrossATypicalBillboard) {
 TEST(MediaRenderSettings, ZeroFieldsTakeTheirDefaultsAndChosenOnesStay) {
     const MediaRenderSettings d = withDefaults({});
     EXPECT_EQ(d.sliceResolution, 256);
-    EXPECT_EQ(d.impostorScale, 0.5f);
     EXPECT_EQ(d.mediaScale, 1.0f);
     EXPECT_EQ(d.upsampleThreshold, 0.2f);
     EXPECT_EQ(d.slices, 0) << "zero slices means: chosen from the medium";
-    EXPECT_EQ(d.blocks, 0) << "zero blocks means: automatic";
-    const MediaRenderSettings set = withDefaults({.sliceResolution = 64, .impostorScale = 2.0f, .mediaScale = 0.5f});
+    EXPECT_TRUE(d.mode.empty()) << "an empty mode is the technique table's first";
+    const MediaRenderSettings set = withDefaults({.sliceResolution = 64, .mediaScale = 0.5f});
     EXPECT_EQ(set.sliceResolution, 64);
-    EXPECT_EQ(set.impostorScale, 2.0f);
     EXPECT_EQ(set.mediaScale, 0.5f);
     EXPECT_EQ(withDefaults(set).mediaScale, 0.5f) << "applying it twice changes nothing";
 }

@@ -1,25 +1,29 @@
 #pragma once
 // Named settings a user can fix from the command line (`--set KEY=VALUE`) or a scene, declared by
-// the modules that read them. An undeclared key or a value of the wrong form is an InputError, so
-// a typo never silently does nothing.
+// the modules that read them (setting_spec.h). An undeclared key or a value the spec does not
+// accept is an InputError naming where the value came from, so a typo never silently does nothing.
+//
+// Does not: hold what a quality tier picks. A module reads its typed struct for the tier and
+// applies the keys set here on top (readFields).
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
+
+#include "nimbus/base/setting_spec.h"
 
 namespace nimbus {
 
 class Settings {
 public:
-    struct Declaration {
-        std::string key;
-        std::string help;  // what it does and its default, for `sandbox settings`
-    };
-
-    // Declaring a key twice is harmless (the first help text stays).
-    void declare(const std::string& key, const std::string& help);
-    bool declared(const std::string& key) const;
-    const std::vector<Declaration>& declarations() const { return declarations_; }
+    // Declaring a key again with the same spec is harmless; with another type, range or words it
+    // is a programming error (std::logic_error), since each key is declared once.
+    void declare(const SettingSpec& spec);
+    bool declared(const std::string& key) const { return find(key) != nullptr; }
+    // In declaration order.
+    const std::vector<SettingSpec>& declarations() const { return specs_; }
+    const SettingSpec* find(const std::string& key) const;
 
     // "KEY=VALUE"; throws InputError for a malformed assignment or an undeclared key.
     void assign(const std::string& assignment, const std::string& origin = "--set");
@@ -29,40 +33,38 @@ public:
     // so the command line wins. Throws InputError for an undeclared key.
     void setDefault(const std::string& key, const std::string& value, const std::string& origin);
 
-    // A preset: while `key` reads `value`, each setting in `values` that nothing has set reads as
-    // given there (a quality tier picking its settings). Explicit values always win. Defining the
-    // same key and value again replaces the preset.
-    void definePreset(const std::string& key, const std::string& value, std::map<std::string, std::string> values);
-    // The values `key` can select presets with, in the order they were defined.
-    std::vector<std::string> presetValues(const std::string& key) const;
-
-    // Set from a source (the command line, a scene); a value a preset supplies does not count.
     bool has(const std::string& key) const { return values_.count(key) != 0; }
     void unset(const std::string& key) {
         values_.erase(key);
         origins_.erase(key);
     }
-    // Where the value comes from: "--set", a scene's node and field, or "quality=fast" for a preset.
+    // Where the value comes from: "--set", "--quality", a scene's node and field. Empty when unset.
     std::string origin(const std::string& key) const;
-    // Typed reads: std::nullopt when unset; InputError naming the key when the value does not parse
-    // or lies outside [min, max].
-    std::optional<double> number(const std::string& key, double min, double max) const;
-    std::optional<long long> integer(const std::string& key, long long min, long long max) const;
-    std::optional<bool> boolean(const std::string& key) const;
+    // The value as it was given; std::nullopt when unset.
     std::optional<std::string> text(const std::string& key) const;
 
-private:
-    struct Preset {
-        std::string key, value;
-        std::map<std::string, std::string> values;
-    };
-    // The value `key` reads (set, else from a selected preset), or nullptr; `origin` is filled.
-    const std::string* lookup(const std::string& key, std::string* origin) const;
+    // The value checked against the key's spec; std::nullopt when unset. InputError naming the
+    // origin and the key when it does not parse, lies outside the range or is not one of the words.
+    std::optional<SettingValue> read(const std::string& key) const;
+    // Every key that was set, checked against its spec (what a scene or a command line got wrong
+    // is refused at once, not when some mode reads it).
+    void validate() const;
 
-    std::vector<Preset> presets_;
-    std::vector<Declaration> declarations_;
+private:
+    std::vector<SettingSpec> specs_;
     std::map<std::string, std::string> values_;
     std::map<std::string, std::string> origins_;
 };
+
+// `start` (a tier's typed settings) with every key of `fields` that was set applied, in order.
+template <class S>
+S readFields(const Settings& settings, std::type_identity_t<std::span<const SettingField<S>>> fields, S start) {
+    for (const SettingField<S>& f : fields)
+        if (const auto value = settings.read(f.spec.key)) f.apply(start, *value);
+    return start;
+}
+
+// The declared settings' values as a user would type them, for messages: "%g" without trailing noise.
+std::string formatSettingNumber(double value);
 
 }  // namespace nimbus

@@ -5,6 +5,7 @@
 #include "common/frame_blocks.h"
 #include "frame/immediate_frame.h"
 #include "nimbus/base/error.h"
+#include "nimbus/gpu/pipeline_state.h"
 #include "nimbus/media/media_renderer.h"
 
 namespace nimbus::media {
@@ -47,7 +48,8 @@ LightSlices MediaRenderer::renderLightSlices(const HostFrame& host, gpu::PassTim
     graph.compile();
     graph.execute(timer);
     if (im.frame.slices.valid()) im.slices = graph.extracted(im.frame.slices);
-    return {im.slices != nullptr ? im.slices->id() : 0, blocks_ ? blocks_->sliceViews() : 0};
+    gpu::applyPipeline({});  // the host's next pass starts from GL's defaults, whatever the last pass declared
+    return {im.slices != nullptr ? im.slices->id() : 0, sliceViewsBlock()};
 }
 
 MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* timer) {
@@ -77,6 +79,7 @@ MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* tim
     if (im.frame.color.valid()) im.color = graph.extracted(im.frame.color);
     if (im.frame.depthUsed.valid()) im.depthUsed = graph.extracted(im.frame.depthUsed);
     im.pool.endFrame();
+    gpu::applyPipeline({});
     im.previousFrame = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     if (im.color != nullptr) {
         layer.color = im.color->id();

@@ -43,11 +43,7 @@ void setParticleSliceUniforms(GLuint program, const SliceView& v, int resolution
 
 void setAdditiveSliceState(int resolution) {
     glViewport(0, 0, resolution, resolution);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendEquation(GL_FUNC_ADD);
-    glBlendFunc(GL_ONE, GL_ONE);  // optical depth adds: no sort needed
+    gpu::applyPipeline(kSliceAdd);
 }
 
 }  // namespace nimbus::media

@@ -1,26 +1,18 @@
 #pragma once
 // A light view's slices and how the slice passes bind and describe them to their programs.
-#include <glm/glm.hpp>
-
+#include "common/shared_frame.h"
 #include "nimbus/gpu/gl_objects.h"
-#include "nimbus/gpu/light_views.h"
+#include "nimbus/gpu/pipeline_state.h"
 
 namespace nimbus::media {
-
-// One light view's slices: the view, the slice range and count, and where its layers start.
-struct SliceView {
-    gpu::LightView view;
-    glm::vec3 lightOrigin{0.0f};  // origin-relative light position (perspective views)
-    int slices = 4;
-    int firstLayer = 0;
-};
 
 // Attaches the ceil(slices/4) layers of `view` in `texture` as draw buffers 0.. of `framebuffer`,
 // clears them to zero unless a pass adds to what an earlier one drew (`clear` false), and binds
 // the framebuffer (every slice pass renders a view this way).
 void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view, bool clear = true);
-// The state slice draws add optical depth with: a resolution² viewport, no depth test or culling,
-// additive blending.
+// Optical depth adds, so slices need no sort: additive blending on every draw buffer.
+inline constexpr gpu::PipelineState kSliceAdd = gpu::PipelineState::blending(gpu::kAdditive);
+// The state slice draws add optical depth with: a resolution² viewport and kSliceAdd.
 void setAdditiveSliceState(int resolution);
 // Detaches them again, so the next view's attachment count starts clean.
 void unbindSliceLayers(GLuint framebuffer, const SliceView& view);

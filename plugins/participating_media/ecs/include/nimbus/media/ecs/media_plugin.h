@@ -13,11 +13,13 @@
 #include <string_view>
 #include <vector>
 
+#include "nimbus/base/quality_tier.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/ecs/app.h"
 #include "nimbus/ecs/plugin.h"
 #include "nimbus/media/emitter_simulation.h"
 #include "nimbus/media/media_renderer.h"
+#include "nimbus/media/technique.h"
 #include "nimbus/media/nimbus/media_render_extension.h"
 #include "nimbus/media/media_scene.h"
 #include "nimbus/media/particle_set.h"
@@ -27,42 +29,29 @@ namespace nimbus::media::ecs {
 
 inline constexpr char kEmitSystem[] = "media.emit";
 
-// The quality tiers (the `quality` setting, `sandbox render --quality`): each is a set of other
-// settings, which anything set explicitly overrides. `exact` is every per-fragment correction;
-// `balanced` and `fast` light each particle once per frame and touch fragments only for opacity.
-struct QualityPreset {
-    const char* name;
-    std::vector<std::pair<std::string, std::string>> settings;
-};
-inline const QualityPreset kQualityPresets[] = {
-    {"fast", {{"lighting", "particle"}, {"slice_deposit", "auto"}, {"slices", "16"}, {"slice_resolution", "auto"},
-              {"slice_detail", "2"}, {"media_scale", "auto"}, {"pcf_radius", "0"}, {"shadow_map_size", "1024"}}},
-    {"balanced", {{"lighting", "particle_exact"}, {"exact_near_lamps", "on"}, {"slice_deposit", "auto"},
-                  {"slice_resolution", "auto"}, {"slice_detail", "4"}}},
-    {"exact", {}},
-};
-
 // The quality ladder a frame budget walks (FrameBudget in nimbus/base/frame_budget.h), from the
 // lowest error to the fastest, as `sandbox bench` orders them by the error it measures (its rows
-// carry these names): the tiers, with the media pass's resolution between them.
+// carry these names): the tiers, with the media pass's resolution between them. Resolution steps
+// of about 1.4× in pixels, so some rung lands within 1.25× of any budget the ladder spans.
 struct QualityRung {
     const char* name;
-    std::vector<std::pair<std::string, std::string>> settings;
+    QualityTier tier;
+    float mediaScale;  // 0: the tier's own
+    // The rung as settings: quality, and media_scale where the rung fixes it.
+    std::vector<std::pair<std::string, std::string>> assignments() const;
 };
-// Resolution steps of about 1.4× in pixels, so some rung lands within 1.25× of any budget the
-// ladder spans.
 inline const QualityRung kQualityLadder[] = {
-    {"exact", {{"quality", "exact"}}},
-    {"balanced", {{"quality", "balanced"}, {"media_scale", "1"}}},
-    {"balanced media_scale=0.7", {{"quality", "balanced"}, {"media_scale", "0.7"}}},
-    {"balanced media_scale=0.5", {{"quality", "balanced"}, {"media_scale", "0.5"}}},
-    {"fast media_scale=1", {{"quality", "fast"}, {"media_scale", "1"}}},
-    {"fast media_scale=0.85", {{"quality", "fast"}, {"media_scale", "0.85"}}},
-    {"fast media_scale=0.7", {{"quality", "fast"}, {"media_scale", "0.7"}}},
-    {"fast media_scale=0.6", {{"quality", "fast"}, {"media_scale", "0.6"}}},
-    {"fast media_scale=0.5", {{"quality", "fast"}, {"media_scale", "0.5"}}},
-    {"fast media_scale=0.35", {{"quality", "fast"}, {"media_scale", "0.35"}}},
-    {"fast media_scale=0.25", {{"quality", "fast"}, {"media_scale", "0.25"}}},
+    {"exact", QualityTier::Exact, 0.0f},
+    {"balanced", QualityTier::Balanced, 1.0f},
+    {"balanced media_scale=0.7", QualityTier::Balanced, 0.7f},
+    {"balanced media_scale=0.5", QualityTier::Balanced, 0.5f},
+    {"fast media_scale=1", QualityTier::Fast, 1.0f},
+    {"fast media_scale=0.85", QualityTier::Fast, 0.85f},
+    {"fast media_scale=0.7", QualityTier::Fast, 0.7f},
+    {"fast media_scale=0.6", QualityTier::Fast, 0.6f},
+    {"fast media_scale=0.5", QualityTier::Fast, 0.5f},
+    {"fast media_scale=0.35", QualityTier::Fast, 0.35f},
+    {"fast media_scale=0.25", QualityTier::Fast, 0.25f},
 };
 inline constexpr char kLightSliceSystem[] = "media.light_slices";
 inline constexpr char kRenderSystem[] = "media.render";
@@ -91,6 +80,11 @@ struct MediaFrame {
     MediaRenderSettings settings;
 };
 
+// Resource: the modes the renderer offers (the plugin's table, or the one it was built with).
+struct MediaTechniques {
+    TechniqueTable table;
+};
+
 // Resource: the real-time renderer; created on the first frame that has something to draw.
 struct MediaRendererState {
     std::unique_ptr<MediaRenderer> renderer;
@@ -99,13 +93,21 @@ struct MediaRendererState {
 
 class MediaPlugin final : public nimbus::ecs::Plugin {
 public:
+    // `techniques`: the modes to offer (a host or a test may add its own to the built-in ones).
+    explicit MediaPlugin(TechniqueTable techniques = builtInTechniques()) : techniques_(std::move(techniques)) {}
     std::string_view name() const override { return "nimbus.participating_media"; }
     void build(nimbus::ecs::App& app) override;
+
+private:
+    TechniqueTable techniques_;
 };
 
 // The media renderer's settings a Settings resource fixes (directly or through the quality
-// preset); InputError naming where a bad value came from.
-MediaRenderSettings readMediaSettings(const Settings* settings);
+// tier), with the modes of `techniques` (null: the built-in ones); InputError naming where a bad
+// value came from.
+MediaRenderSettings readMediaSettings(const Settings* settings, const TechniqueTable* techniques = nullptr);
+// The same with the App's own table (MediaTechniques).
+MediaRenderSettings readMediaSettings(nimbus::ecs::World& world);
 
 // Gathers the particle set the renderers draw from the ECS state (also what `sandbox reference`
 // renders, so both see exactly the same particles).

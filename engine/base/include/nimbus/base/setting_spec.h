@@ -1,0 +1,89 @@
+#pragma once
+// A setting declared once: its key, help text, type, valid range or words, its default, and the
+// media modes and quality tiers in which it acts. Parsing (Settings::read), `sandbox settings`,
+// the validation messages, the scene schema and the editor's widgets all follow from it.
+//
+// A module binds the specs it declares to the fields of its own typed settings struct with
+// SettingField: readFields() starts from the struct the quality tier gives and applies every key
+// that a user set, in declaration order.
+//
+// Does not: store values (Settings does), or know any module's keys.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace nimbus {
+
+enum class SettingType : std::uint8_t {
+    Boolean,  // on/off (a scene may write true/false)
+    Integer,  // a whole number in [min, max], or one of `words`
+    Number,   // a finite number in [min, max], or one of `words`
+    Choice,   // one of `words`
+};
+
+// Quality tiers as bits, for SettingSpec::tiers (quality_tier.h names them).
+inline constexpr unsigned kTierExact = 1u, kTierBalanced = 2u, kTierFast = 4u;
+inline constexpr unsigned kEveryTier = kTierExact | kTierBalanced | kTierFast;
+
+struct SettingSpec {
+    std::string key;
+    std::string help;                 // what it does, in one line; range, words and default are added
+    SettingType type = SettingType::Boolean;
+    double min = 0.0, max = 0.0;      // Integer, Number: the valid range, inclusive
+    std::vector<std::string> words;   // Choice: its values; Integer, Number: words also accepted ("auto")
+    std::string defaultValue;         // what it is when nobody sets it, as a user reads it
+    std::vector<std::string> modes;   // the media modes it acts in; empty: every mode
+    unsigned tiers = 0;               // the tiers it acts in (kTier* bits); 0: every tier
+};
+
+// A value read against its spec: `word` is set (with its index) when the value is one of the
+// spec's words, else the typed field of the spec's type.
+struct SettingValue {
+    std::string word;
+    int wordIndex = -1;
+    bool boolean = false;
+    long long integer = 0;
+    double number = 0.0;
+    bool isWord(const char* w) const { return word == w; }
+};
+
+// One line for `sandbox settings` and --help texts: the help, then the type with its range or
+// words, the default, and where it acts.
+std::string describeSetting(const SettingSpec& spec);
+// "1..4096", "on or off", "fast, balanced or exact": what the spec accepts.
+std::string acceptedValues(const SettingSpec& spec);
+// Whether the spec acts in `mode` (a mode name) and `tierBit`.
+bool settingActsIn(const SettingSpec& spec, const std::string& mode, unsigned tierBit);
+
+// A spec bound to a field of the typed struct S: `apply` writes the read value into it.
+template <class S>
+struct SettingField {
+    SettingSpec spec;
+    void (*apply)(S&, const SettingValue&) = nullptr;
+};
+
+// Appliers for the common shapes, e.g. &setInteger<&BlocksSettings::blocks>.
+template <auto Member, class S>
+void setBoolean(S& s, const SettingValue& v) { s.*Member = v.boolean; }
+template <auto Member, class S>
+void setInteger(S& s, const SettingValue& v) { s.*Member = static_cast<int>(v.integer); }
+template <auto Member, class S>
+void setNumber(S& s, const SettingValue& v) { s.*Member = static_cast<float>(v.number); }
+// The word's index as the member's enum: the spec's words must be in the enum's order.
+template <auto Member, class S>
+void setChoice(S& s, const SettingValue& v) {
+    using Enum = std::remove_reference_t<decltype(s.*Member)>;
+    s.*Member = static_cast<Enum>(v.wordIndex);
+}
+
+// The specs alone, for declaring them.
+template <class S, std::size_t N>
+std::vector<SettingSpec> specsOf(const SettingField<S> (&fields)[N]) {
+    std::vector<SettingSpec> out;
+    for (const SettingField<S>& f : fields) out.push_back(f.spec);
+    return out;
+}
+
+}  // namespace nimbus

@@ -1,0 +1,60 @@
+#pragma once
+// The media renderer's settings: what every mode shares (the light slices, the media target), the
+// mode's name and the mode's own typed settings. Each key is declared once (setting_spec.h): the
+// shared ones here, each mode's in its technique (technique.h). A host may fill the struct
+// directly ({} is the exact tier with every default) or read it from string settings.
+//
+// Does not: name any mode. The technique table does.
+#include <any>
+#include <cstdint>
+#include <string>
+
+#include "nimbus/base/quality_tier.h"
+#include "nimbus/base/settings.h"
+
+namespace nimbus::media {
+
+class TechniqueTable;
+
+enum class SliceDeposit : std::uint8_t { Off, On, Auto };  // in the order of the slice_deposit words
+
+// Zero values take the defaults noted (withDefaults).
+struct MediaRenderSettings {
+    std::string mode;          // a technique's name (TechniqueTable); empty: the table's first
+    int slices = 0;            // per light view; 0: chosen from the medium (see slice_plan.h), else 4..32
+    int sliceResolution = 0;   // texels per side of a slice; 0: 256
+    float sliceTexelsPerRadius = 0.0f;  // > 0: the resolution instead puts this many texels across the
+                                        // median particle's radius (slice_plan.h sliceResolutionFor)
+    // Slices as one float per particle and slab, then a running sum (the same values as the exact
+    // pass within float rounding); auto: unless a lamp's views are among them.
+    SliceDeposit sliceDeposit = SliceDeposit::Off;
+    float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
+    bool mediaScaleAuto = false;  // automaticMediaScale (media_renderer.h)
+    float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2
+    // The technique's own settings (TechniqueEntry::read gives them); empty: its defaults.
+    std::any technique;
+};
+
+// The settings with each zero field that stands for a value given it (sliceResolution 256,
+// mediaScale 1, upsampleThreshold 0.2); where zero means "choose" (slices) it stays.
+// MediaRenderer::prepare applies it, so a host may pass {} or only what it sets.
+MediaRenderSettings withDefaults(MediaRenderSettings settings);
+
+// What `tier` picks for `mode` (empty: the table's first), the mode's own settings included: the
+// settings a Settings with only `quality` set reads as.
+MediaRenderSettings mediaSettingsForTier(QualityTier tier, const TechniqueTable& techniques, const std::string& mode = "");
+
+// Declares `quality`, `mode` (its words from the table), the shared keys and every technique's.
+void declareMediaSettings(Settings& settings, const TechniqueTable& techniques);
+// The settings `settings` fix: the tier's values with every key set applied, the mode's own
+// settings included. InputError naming where a bad value came from.
+MediaRenderSettings readMediaSettings(const Settings& settings, const TechniqueTable& techniques);
+
+// A technique's own settings from MediaRenderSettings::technique, or S{} where it holds none.
+template <class S>
+S techniqueSettings(const MediaRenderSettings& settings) {
+    if (!settings.technique.has_value()) return S{};
+    return std::any_cast<const S&>(settings.technique);
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,50 @@
+#pragma once
+// Where the particles are, as the frame's planning asks it: their bounds, how much of the image
+// their billboards cover, and whether a lamp or the eye lies among them. The renderer and the
+// techniques choose resolutions and shading variants from these.
+//
+// Does not: touch the GPU.
+#include <vector>
+
+#include "nimbus/base/aabb.h"
+#include "nimbus/gpu/view.h"
+#include "nimbus/media/host.h"
+#include "nimbus/media/particle_set.h"
+
+namespace nimbus::media {
+
+// The particles' billboards on screen, estimated on the CPU: how many times over they cover the
+// image (Σ billboard area / image area, each clipped to the screen: what the splat floor pays for),
+// and their half size in pixels, weighted by that area.
+struct SplatFootprint {
+    double coverage = 0.0;
+    double radiusPixels = 0.0;
+};
+SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& view);
+
+// media_scale=auto: 1 unless the billboards cover the image more than kHalfScaleCoverage times
+// over (fill dominates) and no lamp lies among them; then as low as keeps kAutoScaleRadiusTexels
+// across a typical billboard's half size, within [¼, ½]. The kernel is smooth over a billboard,
+// so the depth-aware upsampling loses next to nothing there (docs/design-notes.md).
+float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles);
+inline constexpr double kHalfScaleCoverage = 2.5;
+inline constexpr double kAutoScaleRadiusTexels = 8.0;
+// Below this many billboard pixels per particle, per-particle lighting takes one ray per particle:
+// a fit across them has nothing to follow (docs/design-notes.md).
+inline constexpr double kConstantSplatPixels = 2.0;
+
+// Whether a point or spot light lies inside `bounds` (the particles').
+bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds);
+
+// Whether a point or spot light lies inside a particle that takes more than a tenth of a ray
+// through its centre (a column over kLampMediumColumn): the particles mode's exact_near_lamps.
+inline constexpr double kLampMediumColumn = 0.1;
+bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& lights);
+
+// Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
+bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view);
+
+// World bounds of the particle spheres.
+Aabb particleBounds(const ParticleSet& particles);
+
+}  // namespace nimbus::media

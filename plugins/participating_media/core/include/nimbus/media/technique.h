@@ -1,0 +1,107 @@
+#pragma once
+// A media mode is a technique: one implementation of MediaTechnique in its own folder, described
+// by one TechniqueEntry in a TechniqueTable. The renderer (media_renderer.h) plans what every mode
+// shares (the particle buffer, the uniform blocks, the media target, the light slice views) and
+// calls the frame's technique; it names no mode. The table alone gives the modes' names to the
+// command line, a scene's render.mode, `sandbox settings`, the schema, the editor and the errors.
+//
+// A technique provides:
+//   plan            before the upload pass: what it draws this frame (blocks: the partition)
+//   upload          inside the upload pass, after the particles: its own buffers
+//   addLightSlices  the light slices towards every light, into GraphFrame::slices
+//   addMedia        the medium into the media target; returns its colour
+// and its entry: name, help, its own setting declarations and reader, and a factory.
+//
+// Does not: own the particles or the host's resources, or outlive the renderer that made it.
+#include <any>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "nimbus/base/quality_tier.h"
+#include "nimbus/base/setting_spec.h"
+#include "nimbus/base/settings.h"
+#include "nimbus/gpu/frame_graph.h"
+#include "nimbus/media/graph_frame.h"
+#include "nimbus/media/media_settings.h"
+#include "nimbus/media/particle_set.h"
+
+namespace nimbus::media {
+
+struct SharedFrame;  // what every mode shares this frame (core/src/common/shared_frame.h)
+
+// One figure a technique reports for a frame (`sandbox render --stats` writes it as media_<key>).
+struct TechniqueStat {
+    std::string key;
+    std::variant<bool, long long, double> value;
+};
+
+// The frame as a technique's calls see it.
+struct TechniqueFrame {
+    const ParticleSet* particles = nullptr;
+    const MediaRenderSettings* settings = nullptr;
+    SharedFrame* shared = nullptr;
+    std::vector<TechniqueStat>* stats = nullptr;  // cleared each frame; the technique appends
+    void report(std::string key, std::variant<bool, long long, double> value) const { stats->push_back({std::move(key), value}); }
+};
+
+class MediaTechnique {
+public:
+    virtual ~MediaTechnique() = default;
+    virtual void plan(TechniqueFrame&, const GraphFrame&) {}
+    virtual void upload(TechniqueFrame&, const GraphFrame&) {}
+    virtual void addLightSlices(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) = 0;
+    virtual gpu::ResourceHandle addMedia(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) = 0;
+    // Whether this frame reads HostFrame::occluders; a host may skip them otherwise.
+    virtual bool readsOccluders() const { return false; }
+};
+
+// A configuration `sandbox bench` sweeps: its row name and the settings it sets.
+struct BenchRow {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> settings;
+};
+
+struct TechniqueEntry {
+    std::string name;  // what --mode and render.mode take
+    std::string help;  // what the mode is, in one line
+    bool lightSlices = true;    // lit by the shared light slice views (the slice keys act in it)
+    bool sliceDeposit = false;  // its slices honour slice_deposit
+    std::vector<SettingSpec> settings;  // its own keys (the table sets their `modes` to this name)
+    // Its typed settings for `tier` with every one of its keys that was set applied.
+    std::function<std::any(const Settings&, QualityTier)> read;
+    std::function<std::unique_ptr<MediaTechnique>()> create;
+    // Its rows of `sandbox bench`'s sweep for a scene's particles and lamps; none where empty.
+    std::function<std::vector<BenchRow>(const ParticleSet&, const std::vector<glm::dvec3>& lamps)> benchRows;
+    bool scalingBench = false;  // in `sandbox bench --scaling`'s particle-count sweep
+};
+
+// The modes a renderer offers, in the order users see them; the first is the default.
+class TechniqueTable {
+public:
+    // Throws std::logic_error for a name already in the table or a key another mode declared.
+    void add(TechniqueEntry entry);
+    std::span<const TechniqueEntry> entries() const { return entries_; }
+    const TechniqueEntry* find(const std::string& name) const;
+    // The entry `name` names (empty: the first); InputError naming `origin` and listing the modes.
+    const TechniqueEntry& at(const std::string& name, const std::string& origin = "--mode") const;
+    std::vector<std::string> names() const;
+
+private:
+    std::vector<TechniqueEntry> entries_;
+};
+
+// TechniqueEntry::read for a settings struct S with a `static S forTier(QualityTier)`: the tier's
+// struct with every one of `fields` that was set applied.
+template <class S, std::size_t N>
+std::function<std::any(const Settings&, QualityTier)> readerOf(const SettingField<S> (&fields)[N]) {
+    return [&fields](const Settings& settings, QualityTier tier) -> std::any { return readFields<S>(settings, fields, S::forTier(tier)); };
+}
+
+// particles, blocks, raymarch and billboards (core/src/frame/technique_table.cpp).
+TechniqueTable builtInTechniques();
+
+}  // namespace nimbus::media

@@ -1,0 +1,33 @@
+#pragma once
+// `blocks` (Harris and Lastra's particle hierarchies with depth impostors, seed 000 of the
+// design): the particles grouped into blocks, each block's depth impostor rendered for the camera
+// and every light view, composited back to front, with the blocks a mesh reaches cut at it.
+#include <cstdint>
+
+#include "nimbus/base/quality_tier.h"
+#include "nimbus/media/technique.h"
+
+namespace nimbus::media {
+
+// How the blocks are shaded where a mesh is seen inside the medium (planning/block_classification.h
+// blocksShadedExactly): exactly is at up to 16 points placed by their own particles, with the
+// compositing order of overlapping blocks corrected; smoothly is at two points of each block's
+// depth profile, as everywhere else. In the order of the block_shading words.
+enum class BlockShading : std::uint8_t {
+    Seam,    // exactly near the texels where a mesh lies among the particles, smoothly elsewhere
+    Smooth,  // smoothly everywhere: fastest, but can show a seam (docs/design-notes.md)
+    Exact,   // exactly over those blocks' whole rectangles
+};
+
+struct BlocksSettings {
+    int blocks = 0;              // block count; 0: automatic (block_partition.h)
+    float impostorScale = 0.0f;  // impostor texels per covered pixel; 0: 0.5
+    bool instancing = false;     // one block prototype instanced at every block (the paper's b + N/b)
+    BlockShading blockShading = BlockShading::Seam;
+
+    static BlocksSettings forTier(QualityTier) { return {}; }
+};
+
+TechniqueEntry blocksTechnique();
+
+}  // namespace nimbus::media

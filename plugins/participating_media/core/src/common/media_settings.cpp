@@ -1,0 +1,146 @@
+// The settings every mode shares, declared once, and the reading of MediaRenderSettings.
+#include "nimbus/media/media_settings.h"
+
+#include "nimbus/media/technique.h"
+
+namespace nimbus::media {
+namespace {
+
+// The media target's resolution: a number clears auto, auto keeps what the tier gave.
+void setMediaScale(MediaRenderSettings& s, const SettingValue& v) {
+    s.mediaScaleAuto = v.isWord("auto");
+    if (!s.mediaScaleAuto) s.mediaScale = static_cast<float>(v.number);
+}
+
+// auto puts slice_detail texels (3 unless the tier or slice_detail says) across the median radius.
+void setSliceResolution(MediaRenderSettings& s, const SettingValue& v) {
+    if (v.isWord("auto")) {
+        s.sliceResolution = 0;
+        if (!(s.sliceTexelsPerRadius > 0.0f)) s.sliceTexelsPerRadius = 3.0f;
+        return;
+    }
+    s.sliceResolution = static_cast<int>(v.integer);
+    s.sliceTexelsPerRadius = 0.0f;
+}
+
+void setSliceDetail(MediaRenderSettings& s, const SettingValue& v) {
+    if (s.sliceTexelsPerRadius > 0.0f) s.sliceTexelsPerRadius = static_cast<float>(v.number);
+}
+
+enum class Acts { Everywhere, LitBySlices, SliceDeposit };
+
+struct SharedField {
+    SettingField<MediaRenderSettings> field;
+    Acts acts;
+};
+
+// In the order they apply: slice_resolution before slice_detail.
+const SharedField kSharedFields[] = {
+    {{{.key = "slices", .help = "light slices per light view", .type = SettingType::Integer, .min = 4, .max = 32,
+       .defaultValue = "chosen from the medium (fast: 16)"},
+      &setInteger<&MediaRenderSettings::slices>},
+     Acts::LitBySlices},
+    {{{.key = "slice_resolution",
+       .help = "texels per side of a light slice; auto chooses it from the particles' size as the light sees them (slice_detail)",
+       .type = SettingType::Integer,
+       .min = 16,
+       .max = 4096,
+       .words = {"auto"},
+       .defaultValue = "256 (balanced and fast: auto)"},
+      &setSliceResolution},
+     Acts::LitBySlices},
+    {{{.key = "slice_detail", .help = "with slice_resolution=auto: slice texels across the median particle's radius",
+       .type = SettingType::Number, .min = 0.25, .max = 16.0, .defaultValue = "3 (balanced: 4, fast: 2)"},
+      &setSliceDetail},
+     Acts::LitBySlices},
+    {{{.key = "slice_deposit",
+       .help = "light slices drawn as one float per particle and slab, then summed; auto: on unless a point or spot light's "
+               "views are among them",
+       .type = SettingType::Choice,
+       .words = {"off", "on", "auto"},
+       .defaultValue = "off (balanced and fast: auto)"},
+      &setChoice<&MediaRenderSettings::sliceDeposit>},
+     Acts::SliceDeposit},
+    {{{.key = "media_scale",
+       .help = "resolution of the media pass relative to the frame; auto: where the particles cover the image more than 2.5 "
+               "times over, 1/4 to 1/2 keeping 8 texels across a typical billboard",
+       .type = SettingType::Number,
+       .min = 0.0625,
+       .max = 1.0,
+       .words = {"auto"},
+       .defaultValue = "1 (fast: auto)"},
+      &setMediaScale},
+     Acts::Everywhere},
+    {{{.key = "upsample_threshold", .help = "offscreen media: relative depth difference the upsampling treats as an edge",
+       .type = SettingType::Number, .min = 1e-4, .max = 10.0, .defaultValue = "0.2"},
+      &setNumber<&MediaRenderSettings::upsampleThreshold>},
+     Acts::Everywhere},
+};
+
+MediaRenderSettings sharedForTier(QualityTier tier) {
+    MediaRenderSettings s;
+    if (tier == QualityTier::Exact) return s;
+    s.sliceDeposit = SliceDeposit::Auto;
+    s.sliceTexelsPerRadius = tier == QualityTier::Fast ? 2.0f : 4.0f;
+    if (tier == QualityTier::Fast) {
+        s.slices = 16;
+        s.mediaScaleAuto = true;
+    }
+    return s;
+}
+
+SettingSpec modeSpec(const TechniqueTable& techniques) {
+    SettingSpec spec{.key = "mode", .help = "how the medium is drawn:", .type = SettingType::Choice};
+    for (const TechniqueEntry& e : techniques.entries()) {
+        spec.help += std::string(spec.words.empty() ? " " : "; ") + e.name + ": " + e.help;
+        spec.words.push_back(e.name);
+    }
+    if (!spec.words.empty()) spec.defaultValue = spec.words.front();
+    return spec;
+}
+
+}  // namespace
+
+MediaRenderSettings withDefaults(MediaRenderSettings s) {
+    if (s.sliceResolution <= 0) s.sliceResolution = 256;
+    if (s.mediaScale <= 0.0f) s.mediaScale = 1.0f;
+    if (s.upsampleThreshold <= 0.0f) s.upsampleThreshold = 0.2f;
+    return s;
+}
+
+MediaRenderSettings mediaSettingsForTier(QualityTier tier, const TechniqueTable& techniques, const std::string& mode) {
+    const Settings none;
+    MediaRenderSettings s = sharedForTier(tier);
+    const TechniqueEntry& entry = techniques.at(mode);
+    s.mode = entry.name;
+    s.technique = entry.read(none, tier);
+    return s;
+}
+
+void declareMediaSettings(Settings& settings, const TechniqueTable& techniques) {
+    settings.declare(qualityTierSpec());
+    settings.declare(modeSpec(techniques));
+    for (const SharedField& shared : kSharedFields) {
+        SettingSpec spec = shared.field.spec;
+        for (const TechniqueEntry& e : techniques.entries())
+            if ((shared.acts == Acts::LitBySlices && e.lightSlices) || (shared.acts == Acts::SliceDeposit && e.sliceDeposit))
+                spec.modes.push_back(e.name);
+        settings.declare(spec);
+    }
+    for (const TechniqueEntry& e : techniques.entries())
+        for (const SettingSpec& spec : e.settings) settings.declare(spec);
+}
+
+MediaRenderSettings readMediaSettings(const Settings& settings, const TechniqueTable& techniques) {
+    settings.validate();  // every key set is checked, whichever mode reads it
+    const QualityTier tier = readQualityTier(settings);
+    MediaRenderSettings s = sharedForTier(tier);
+    for (const SharedField& shared : kSharedFields)
+        if (const auto value = settings.read(shared.field.spec.key)) shared.field.apply(s, *value);
+    const TechniqueEntry& entry = techniques.at(settings.text("mode").value_or(""), settings.origin("mode"));
+    s.mode = entry.name;
+    s.technique = entry.read(settings, tier);
+    return s;
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,77 @@
+// The particles' footprint for the frame's planning (nimbus/media/medium_footprint.h).
+#include "nimbus/media/medium_footprint.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace nimbus::media {
+
+Aabb particleBounds(const ParticleSet& particles) {
+    Aabb bounds;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const glm::dvec3 r(particles.radius[i]);
+        bounds.extend(particles.position[i] - r);
+        bounds.extend(particles.position[i] + r);
+    }
+    return bounds;
+}
+
+SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& view) {
+    const double pixels = static_cast<double>(view.width) * view.height;
+    const glm::dmat4 viewMatrix(view.view);
+    // Pixels per metre at depth 1 (perspective) or per metre (orthographic), vertically.
+    const double scale = view.height / (2.0 * (view.orthographic ? view.orthoHalfExtent.y : view.tanHalfFovY));
+    double covered = 0.0, radiusTimesArea = 0.0;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const glm::dvec3 c(viewMatrix * glm::dvec4(particles.position[i] - view.origin, 1.0));
+        const double r = particles.radius[i], depth = -c.z;
+        if (!view.orthographic && depth <= r) {
+            covered += pixels;  // in front of or around the eye: a full-screen quad
+            radiusTimesArea += pixels * std::sqrt(pixels);
+            continue;
+        }
+        const double half = r * scale / (view.orthographic ? 1.0 : depth);  // the quad's half size in pixels
+        const double area = std::min(4.0 * half * half, pixels);
+        covered += area;
+        radiusTimesArea += area * half;
+    }
+    return {covered / pixels, covered > 0.0 ? radiusTimesArea / covered : 0.0};
+}
+
+float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles) {
+    // A lamp among the particles lights a peak a few pixels wide, which a lower resolution blurs away.
+    if (footprint.coverage <= kHalfScaleCoverage || lampAmongParticles) return 1.0f;
+    return static_cast<float>(std::clamp(kAutoScaleRadiusTexels / footprint.radiusPixels, 0.25, 0.5));
+}
+
+bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds) {
+    return std::any_of(lights.begin(), lights.end(), [&](const Light& l) {
+        return l.kind != gpu::LightKind::Directional && bounds.contains(l.position);
+    });
+}
+
+bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& lights) {
+    // Peak column through a particle's centre: σ ∫ e^{−k u²} du over the chord ≈ 0.8355·σR.
+    constexpr double kColumnPerSigmaRadius = 0.8355;
+    for (const auto& light : lights) {
+        if (light.kind == gpu::LightKind::Directional) continue;
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            const double r = particles.radius[i];
+            if (kColumnPerSigmaRadius * particles.sigma[i] * r > kLampMediumColumn && glm::length(light.position - particles.position[i]) < r)
+                return true;
+        }
+    }
+    return false;
+}
+
+bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view) {
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const glm::dvec3 d = particles.position[i] - view.origin;
+        // Orthographic rays start on the camera's plane: a particle crossing it holds their start.
+        const double distance = view.orthographic ? std::abs(glm::dot(d, view.forward)) : glm::length(d);
+        if (distance < particles.radius[i]) return true;
+    }
+    return false;
+}
+
+}  // namespace nimbus::media

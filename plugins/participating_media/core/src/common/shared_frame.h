@@ -1,0 +1,37 @@
+#pragma once
+// What every media mode shares in one frame, planned by the renderer (frame/media_renderer.cpp)
+// before it calls the frame's technique: the particles on the GPU, the plugin's uniform blocks,
+// the media target, the particles' bounds and footprint, and the light slice views.
+#include <memory>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/frame_blocks.h"
+#include "common/media_target.h"
+#include "common/particle_buffer.h"
+#include "nimbus/base/aabb.h"
+#include "nimbus/gpu/light_views.h"
+
+namespace nimbus::media {
+
+// One light view's slices: the view, the slice range and count, and where its layers start.
+struct SliceView {
+    gpu::LightView view;
+    glm::vec3 lightOrigin{0.0f};  // origin-relative light position (perspective views)
+    int slices = 4;
+    int firstLayer = 0;
+};
+
+struct SharedFrame {
+    // Made with the first frame that draws something (they need the GL context).
+    std::unique_ptr<ParticleGpuBuffer> buffer;
+    std::unique_ptr<FrameBlocks> blocks;
+    MediaTarget target;
+    Aabb bounds;                        // the particle spheres', world space
+    double coverage = 0.0;              // how many times over the billboards cover the image
+    std::vector<SliceView> sliceViews;  // every light's, in GraphFrame::sliceViews order
+    int sliceResolution = 0;            // texels per side of every slice
+};
+
+}  // namespace nimbus::media

@@ -1,0 +1,126 @@
+#include "particles/particles_technique.h"
+
+#include "common/shared_frame.h"
+#include "nimbus/base/settings.h"
+#include "nimbus/media/medium_footprint.h"
+#include "particles/particle_lighting_pass.h"
+#include "particles/particle_pass.h"
+#include "particles/particle_splat_pass.h"
+#include "slices/particle_slices.h"
+
+namespace nimbus::media {
+namespace {
+
+const SettingField<ParticlesSettings> kParticlesFields[] = {
+    {{.key = "lighting",
+      .help = "where light is evaluated: per fragment (exact), per particle fitted across its billboard, or per particle "
+              "with each of its rays shaded as a fragment",
+      .type = SettingType::Choice,
+      .words = {"fragment", "particle", "particle_exact"},
+      .defaultValue = "fragment (balanced: particle_exact, fast: particle)"},
+     &setChoice<&ParticlesSettings::lighting>},
+    {{.key = "exact_near_lamps",
+      .help = "with per-particle lighting: shade per fragment while a point or spot light lies inside the medium (a "
+              "particle with a central column over 0.1)",
+      .type = SettingType::Boolean,
+      .defaultValue = "off (balanced: on)",
+      .tiers = kTierBalanced | kTierFast},
+     &setBoolean<&ParticlesSettings::exactNearLamps>},
+    {{.key = "soft_particles",
+      .help = "clip each particle's kernel at opaque surfaces (off: the billboard plane test)",
+      .type = SettingType::Boolean,
+      .defaultValue = "on",
+      .tiers = kTierExact},
+     &setBoolean<&ParticlesSettings::softParticles>},
+    {{.key = "layer_light",
+      .help = "integrate the light's transmittance over each particle (off: at one point, faster)",
+      .type = SettingType::Boolean,
+      .defaultValue = "on",
+      .tiers = kTierExact},
+     &setBoolean<&ParticlesSettings::layerLight>},
+};
+
+class ParticlesTechnique final : public MediaTechnique {
+public:
+    void upload(TechniqueFrame& frame, const GraphFrame& context) override {
+        SharedFrame& shared = *frame.shared;
+        shared.buffer->sortBackToFront(*frame.particles, context.host.camera);
+        shared.buffer->uploadLampNeighbourhoods(*frame.particles, context.host.lights);
+    }
+
+    void addLightSlices(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) override {
+        slices_.add(graph, context, *frame.particles, *frame.shared, frame.settings->sliceDeposit);
+    }
+
+    gpu::ResourceHandle addMedia(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) override {
+        const ParticlesSettings own = techniqueSettings<ParticlesSettings>(*frame.settings);
+        const bool perParticle = own.lighting != ParticleLighting::Fragment &&
+                                 !(own.exactNearLamps && lampInsideMedium(*frame.particles, context.host.lights));
+        return perParticle ? addPerParticle(graph, context, frame, own) : addPerFragment(graph, context, frame, own);
+    }
+
+private:
+    gpu::ResourceHandle addPerParticle(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame,
+                                       const ParticlesSettings& own) {
+        if (!lightingPass_) lightingPass_ = std::make_unique<ParticleLightingPass>();
+        if (!splatPass_) splatPass_ = std::make_unique<ParticleSplatPass>();
+        const SharedFrame& shared = *frame.shared;
+        const gpu::View& v = context.host.camera;
+        const FragmentLamps lamps = fragmentLamps(context.host.lights);
+        // Billboards of a few pixels: a fit across them has nothing to follow, and at 10⁶ particles
+        // its nine rays and varyings cost more than the pixels.
+        const bool constant = shared.coverage * v.width * v.height < kConstantSplatPixels * static_cast<double>(frame.particles->size());
+        frame.report("exact_lighting", false);
+        frame.report("constant_source", constant);
+        lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(), own.lighting == ParticleLighting::ParticleExact,
+                           constant, lamps);
+        return splatPass_->add(graph, context, *shared.buffer, *lightingPass_, eyeInsideMedium(*frame.particles, v), constant, lamps,
+                               shared.target);
+    }
+
+    gpu::ResourceHandle addPerFragment(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame,
+                                       const ParticlesSettings& own) {
+        frame.report("exact_lighting", true);
+        frame.report("constant_source", false);
+        if (!particlePass_) particlePass_ = std::make_unique<ParticlePass>();
+        return particlePass_->add(graph, context, *frame.shared->buffer, {own.softParticles, own.layerLight}, frame.shared->target);
+    }
+
+    ParticleSlices slices_;
+    std::unique_ptr<ParticlePass> particlePass_;  // each made when first needed
+    std::unique_ptr<ParticleLightingPass> lightingPass_;
+    std::unique_ptr<ParticleSplatPass> splatPass_;
+};
+
+}  // namespace
+
+ParticlesSettings ParticlesSettings::forTier(QualityTier tier) {
+    ParticlesSettings s;
+    if (tier == QualityTier::Fast) s.lighting = ParticleLighting::Particle;
+    if (tier == QualityTier::Balanced) {
+        s.lighting = ParticleLighting::ParticleExact;
+        s.exactNearLamps = true;
+    }
+    return s;
+}
+
+TechniqueEntry particlesTechnique() {
+    return {.name = "particles",
+            .help = "sorted soft billboards, each a closed-form slab of its kernel lit through the light slices",
+            .sliceDeposit = true,
+            .settings = specsOf(kParticlesFields),
+            .read = readerOf(kParticlesFields),
+            .create = [] { return std::make_unique<ParticlesTechnique>(); },
+            .benchRows = [](const ParticleSet&, const std::vector<glm::dvec3>&) {
+                std::vector<BenchRow> rows{{"particles", {{"mode", "particles"}}}};
+                for (const char* slices : {"4", "8", "16", "32"})
+                    rows.push_back({std::string("particles slices=") + slices, {{"mode", "particles"}, {"slices", slices}}});
+                rows.push_back({"particles layer_light=off", {{"mode", "particles"}, {"layer_light", "off"}}});
+                rows.push_back({"particles media_scale=0.5", {{"mode", "particles"}, {"media_scale", "0.5"}}});
+                rows.push_back({"particles media_scale=0.25", {{"mode", "particles"}, {"media_scale", "0.25"}}});
+                return rows;
+            },
+            .scalingBench = true};
+}
+
+}  // namespace nimbus::media

@@ -1,0 +1,37 @@
+#pragma once
+// `particles`: camera-facing billboards sorted back to front, each a closed-form slab of its
+// kernel lit through the light slices and the mesh shadow maps; per fragment in the exact tier,
+// per particle (fitted across the billboard) in balanced and fast.
+#include <cstdint>
+
+#include "nimbus/base/quality_tier.h"
+#include "nimbus/media/technique.h"
+
+namespace nimbus::media {
+
+// Where the particles are lit (the source J of DESIGN.md §2), in the order of the lighting words.
+enum class ParticleLighting : std::uint8_t {
+    Fragment,       // per fragment, with every correction: the exact tier
+    Particle,       // per particle at nine rays through its billboard, J fitted across it; light
+                    // at each ray's shading point (phase, smooth mesh shadow, slices' transmittance)
+    ParticleExact,  // as Particle, each ray shaded as Fragment shades a pixel
+};
+
+struct ParticlesSettings {
+    ParticleLighting lighting = ParticleLighting::Fragment;
+    // With per-particle lighting: shade a frame per fragment after all where a lamp lies inside the
+    // medium (lampInsideMedium). Around it 1/d² peaks across overlapping particles, and how much of
+    // each lies in front of the lamp decides what the compositing order gets wrong, which only the
+    // exact tier's lamp neighbourhoods correct (docs/design-notes.md).
+    bool exactNearLamps = false;
+    bool softParticles = true;  // clip each particle's kernel at the opaque surface (off: billboard plane test)
+    // Integrate the light's transmittance over each particle's layer (off: take it at one point:
+    // faster (docs/PERFORMANCE.md), less exact for dense particles).
+    bool layerLight = true;
+
+    static ParticlesSettings forTier(QualityTier tier);
+};
+
+TechniqueEntry particlesTechnique();
+
+}  // namespace nimbus::media

@@ -1,0 +1,63 @@
+#include "raymarch/raymarch_technique.h"
+
+#include "common/shared_frame.h"
+#include "nimbus/base/settings.h"
+#include "raymarch/raymarch_pass.h"
+#include "raymarch/voxel_grid.h"
+#include "slices/particle_slices.h"
+
+namespace nimbus::media {
+namespace {
+
+const SettingField<RaymarchSettings> kRaymarchFields[] = {
+    {{.key = "voxels",
+      .help = "voxels along the grid's longest side",
+      .type = SettingType::Integer,
+      .min = 4,
+      .max = 256,
+      .defaultValue = "a voxel per third of the small particles' radius, at most 96"},
+     &setInteger<&RaymarchSettings::voxels>},
+    {{.key = "raymarch_steps", .help = "most samples per ray", .type = SettingType::Integer, .min = 4, .max = 4096, .defaultValue = "128"},
+     &setInteger<&RaymarchSettings::raymarchSteps>},
+};
+
+class RaymarchTechnique final : public MediaTechnique {
+public:
+    void addLightSlices(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) override {
+        slices_.add(graph, context, *frame.particles, *frame.shared, frame.settings->sliceDeposit);
+    }
+
+    gpu::ResourceHandle addMedia(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) override {
+        const RaymarchSettings own = techniqueSettings<RaymarchSettings>(*frame.settings);
+        if (!pass_) pass_ = std::make_unique<RaymarchPass>();
+        const VoxelGrid grid = voxelize(*frame.particles, own.voxels);
+        frame.report("voxels_x", static_cast<long long>(grid.size.x));
+        frame.report("voxels_y", static_cast<long long>(grid.size.y));
+        frame.report("voxels_z", static_cast<long long>(grid.size.z));
+        const int steps = own.raymarchSteps > 0 ? own.raymarchSteps : kDefaultRaymarchSteps;
+        return pass_->add(graph, context, grid, steps, frame.shared->target);
+    }
+
+private:
+    ParticleSlices slices_;
+    std::unique_ptr<RaymarchPass> pass_;
+};
+
+}  // namespace
+
+TechniqueEntry raymarchTechnique() {
+    return {.name = "raymarch",
+            .help = "the particles voxelised each frame and the grid ray-marched per pixel, lit through the light slices",
+            .sliceDeposit = true,
+            .settings = specsOf(kRaymarchFields),
+            .read = readerOf(kRaymarchFields),
+            .create = [] { return std::make_unique<RaymarchTechnique>(); },
+            .benchRows = [](const ParticleSet&, const std::vector<glm::dvec3>&) {
+                return std::vector<BenchRow>{{"raymarch", {{"mode", "raymarch"}}},
+                                             {"raymarch media_scale=0.5", {{"mode", "raymarch"}, {"media_scale", "0.5"}}},
+                                             {"raymarch voxels=48", {{"mode", "raymarch"}, {"voxels", "48"}}},
+                                             {"raymarch raymarch_steps=64", {{"mode", "raymarch"}, {"raymarch_steps", "64"}}}};
+            }};
+}
+
+}  // namespace nimbus::media
