@@ -10,6 +10,7 @@
 #include <ctime>
 #include <map>
 #include <random>
+#include <variant>
 
 #include <epoxy/gl.h>
 
@@ -127,7 +128,8 @@ nlohmann::json runScaling(Session& session, const media::ParticleSet& sceneParti
                 row["frame_ms"] = lastMs[key];
                 row["splat_floor_ms"] = medium.measureSplatFloor(render::makeView(input.camera, settings.width, settings.height), frames);
                 row["frames"] = frames;
-                row["blocks"] = static_cast<int>(medium.stats().value("blocks"));
+                for (const media::TechniqueStat& stat : medium.stats().technique)
+                    std::visit([&](auto v) { row[stat.key] = v; }, stat.value);
                 rows.push_back(row);
             }
         }

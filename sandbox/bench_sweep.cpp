@@ -109,7 +109,7 @@ std::vector<BenchResult> runSweep(Session& session, const std::vector<BenchConfi
         r.error = media::reference::compareImages(image, reference);
         if (const auto* state = app.world().tryResource<media::ecs::MediaRendererState>(); state && state->renderer) {
             r.slices = state->renderer->stats().slices;
-            r.blocks = static_cast<int>(state->renderer->stats().value("blocks"));
+            r.technique = state->renderer->stats().technique;
         }
         results.push_back(std::move(r));
         if (progress) progress(c + 1);

@@ -9,6 +9,7 @@
 
 #include "nimbus/assets/image_io.h"
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/technique.h"
 #include "nimbus/media/reference/image_metrics.h"
 #include "session.h"
 
@@ -32,7 +33,7 @@ struct BenchResult {
     double floorMs = 0.0;                  // the splat floor: every particle's billboard blended once
     media::reference::ImageMetrics error;
     int slices = 0;
-    int blocks = 0;
+    std::vector<media::TechniqueStat> technique;  // what the mode reported (media_renderer.h MediaFrameStats)
     bool pareto = false;                   // on the time/error Pareto front of its sweep
 };
 
