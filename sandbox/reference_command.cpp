@@ -1,8 +1,12 @@
 // sandbox reference SCENE --out F.exr [--size WxH] [--time T] [--camera NAME] [--tolerance E] [--threads N]
+//                         [--spp N] [--seed S] [--scattering single|multiple]
 // Renders the ground truth of DESIGN.md §2 on the CPU (plugins/participating_media/reference) and
-// writes it as linear radiance (.exr; any other format OIIO writes is display-encoded).
+// writes it as linear radiance (.exr; any other format OIIO writes is display-encoded). In the
+// multiple-scattering model it also writes each pixel's standard error beside it (F.stderr.exr)
+// and prints its mean.
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
 #include "commands.h"
@@ -23,7 +27,16 @@ struct ReferenceOptions {
     std::string camera;
     double tolerance = 1e-4;
     int threads = 0;
+    int spp = 64;
+    std::uint64_t seed = 1;
+    std::string scattering;  // empty: the scene's
 };
+
+// F.exr → F.stderr.exr: where the standard error goes.
+std::string standardErrorPath(const std::string& out) {
+    const auto dot = out.rfind('.');
+    return (dot == std::string::npos ? out : out.substr(0, dot)) + ".stderr" + (dot == std::string::npos ? "" : out.substr(dot));
+}
 
 int run(const ReferenceOptions& o) {
     int width = 0, height = 0;
@@ -35,7 +48,9 @@ int run(const ReferenceOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     // The same Session the real-time renderer starts from: the same simulation steps, node poses
     // and particle set, so `compare` measures the renderers and nothing else.
-    Session session({o.scene, o.time, {}});
+    SessionOptions options{o.scene, o.time, {}};
+    if (!o.scattering.empty()) options.scattering = parseScattering(o.scattering);
+    Session session(options);
     const auto reference = makeReferenceScene(session, o.camera, width, height);
     const media::reference::ReferenceInputs& inputs = reference->inputs;
     const media::ParticleSet& particles = reference->particles;
@@ -45,13 +60,21 @@ int run(const ReferenceOptions& o) {
     settings.height = height;
     settings.tolerance = o.tolerance;
     settings.threads = o.threads;
+    settings.spp = o.spp;
+    settings.seed = o.seed;
     media::reference::ReferenceStats stats;
-    const assets::RgbImage image = media::reference::renderReference(inputs, settings, &stats);
+    assets::RgbImage standardError;
+    const assets::RgbImage image = media::reference::renderReference(inputs, settings, &stats, &standardError);
     assets::writeImage(o.out, image);
+    if (stats.multiple) assets::writeImage(standardErrorPath(o.out), standardError);
 
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("reference: %dx%d, %zu particles, camera %s, %.2f s (render %.2f s) -> %s\n", width, height,
                 particles.size(), inputs.camera.name.c_str(), seconds, stats.seconds, o.out.c_str());
+    if (stats.multiple)
+        std::printf("reference: multiple scattering, %d paths per pixel: mean standard error %.4g (%.3g%% of the mean radiance %.4g) -> %s\n",
+                    o.spp, stats.meanStandardError, stats.meanRadiance > 0.0 ? 100.0 * stats.meanStandardError / stats.meanRadiance : 0.0,
+                    stats.meanRadiance, standardErrorPath(o.out).c_str());
     if (stats.unconvergedPixels > 0)
         log::warn("reference: " + std::to_string(stats.unconvergedPixels) +
                   " pixels stopped at the quadrature's depth bound before reaching the tolerance");
@@ -70,6 +93,9 @@ CommandRunner addReferenceCommand(CLI::App& app) {
     cmd->add_option("--camera", options->camera, "camera (camera or node name); default: the scene's first");
     cmd->add_option("--tolerance", options->tolerance, "relative change at which the quadrature stops")->capture_default_str();
     cmd->add_option("--threads", options->threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
+    cmd->add_option("--spp", options->spp, "multiple scattering: paths per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 20));
+    cmd->add_option("--seed", options->seed, "multiple scattering: the paths' random streams")->capture_default_str();
+    cmd->add_option("--scattering", options->scattering, "the optical model instead of the scene's: single or multiple");
     return [options] { return run(*options); };
 }
 

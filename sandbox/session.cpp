@@ -15,7 +15,25 @@ namespace nimbus::sandbox {
 Session::Session(const SessionOptions& options)
     : Session(std::make_shared<const assets::Scene>(assets::loadScene(options.scene)), options) {}
 
-Session::Session(std::shared_ptr<const assets::Scene> scene, const SessionOptions& options) : scene_(std::move(scene)) {
+namespace {
+
+// The scene as the options have it: another optical model makes a copy that differs in it alone.
+std::shared_ptr<const assets::Scene> withModel(std::shared_ptr<const assets::Scene> scene, const SessionOptions& options) {
+    if (!options.scattering || *options.scattering == scene->environment.scattering) return scene;
+    auto copy = std::make_shared<assets::Scene>(*scene);
+    copy->environment.scattering = *options.scattering;
+    return copy;
+}
+
+}  // namespace
+
+assets::Scattering parseScattering(const std::string& text, const std::string& option) {
+    if (text == "multiple") return assets::Scattering::Multiple;
+    if (text == "single") return assets::Scattering::Single;
+    throwInputError(option, text, "", "unknown scattering model (known: multiple, single)");
+}
+
+Session::Session(std::shared_ptr<const assets::Scene> scene, const SessionOptions& options) : scene_(withModel(std::move(scene), options)) {
     app_ = std::make_unique<ecs::App>();
     app_->insertResource<Settings>();
     app_->addPlugin<render::RenderPlugin>();

@@ -22,7 +22,11 @@ struct SessionOptions {
     std::vector<std::string> settings;  // KEY=VALUE from --set
     std::vector<std::pair<std::string, std::string>> options;  // (KEY=VALUE, origin) from options such as --mode
     std::optional<media::TechniqueTable> techniques;  // the media modes offered; empty: the built-in ones
+    std::optional<assets::Scattering> scattering;      // the optical model instead of the scene's (--scattering)
 };
+
+// "single" or "multiple" (--scattering); InputError naming `option` otherwise.
+assets::Scattering parseScattering(const std::string& text, const std::string& option = "--scattering");
 
 class Session {
 public:

@@ -90,6 +90,7 @@ void BM_ReferenceCloud(benchmark::State& state) {
     in.lights = c.lights;
     in.particles = &c.particles;
     media::reference::ReferenceSettings settings;
+    settings.scattering = assets::Scattering::Single;  // today's real-time model
     settings.width = width;
     settings.height = height;
     settings.progress = true;

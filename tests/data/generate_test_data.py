@@ -169,7 +169,8 @@ def scene_lights_cameras():
             {"name": "Bulb", "type": "point", "intensity": 100, "range": 20},
             {"type": "spot", "color": [0, 1, 0], "intensity": 50, "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.6}},
         ]},
-        "NIMBUS_participating_media": {"background": [0.1, 0.2, 0.3], "ambient": [0.01, 0.02, 0.03], "quality": "plugin decides"},
+        "NIMBUS_participating_media": {"background": [0.1, 0.2, 0.3], "ambient": [0.01, 0.02, 0.03],
+                                       "extras": {"quality": "another tool's data"}},
     }
     g.doc["nodes"] = [
         {"name": "Floor", "mesh": 0, "children": [5]},
@@ -354,8 +355,16 @@ def write_malformed(glb_data):
     malformed("node_own_child.gltf", self_child)
 
     def bad_background(g):
-        g.doc["extensions"] = {"NIMBUS_participating_media": {"background": [1, 2], "emitters": "whatever"}}
+        g.doc["extensions"] = {"NIMBUS_participating_media": {"background": [1, 2]}}
     malformed("bad_background.gltf", bad_background)
+
+    def root_typo(g):
+        g.doc["extensions"] = {"NIMBUS_participating_media": {"ambeint": [1, 1, 1]}}
+    malformed("root_typo.gltf", root_typo)
+
+    def unknown_scattering(g):
+        g.doc["extensions"] = {"NIMBUS_participating_media": {"scattering": "double"}}
+    malformed("unknown_scattering.gltf", unknown_scattering)
 
     def negative_ambient(g):
         g.doc["extensions"] = {"NIMBUS_participating_media": {"ambient": [0.1, -0.2, 0.1]}}

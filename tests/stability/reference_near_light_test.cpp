@@ -103,6 +103,7 @@ protected:
         sandbox::Session session({scene, 0.0, {}});
         const auto inputs = sandbox::makeReferenceScene(session, "", width, height);
         reference::ReferenceSettings settings;
+        settings.scattering = assets::Scattering::Single;  // today's real-time model
         settings.width = width;
         settings.height = height;
         settings.progress = false;

@@ -77,6 +77,7 @@ assets::RgbImage renderReference(sandbox::Session& session, const std::string& c
                                  double tolerance) {
     const auto scene = sandbox::makeReferenceScene(session, camera, width, height);
     reference::ReferenceSettings settings;
+    settings.scattering = assets::Scattering::Single;  // today's real-time model
     settings.width = width;
     settings.height = height;
     settings.tolerance = tolerance;

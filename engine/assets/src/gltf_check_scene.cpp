@@ -83,10 +83,15 @@ void checkEnvironment(const GltfCheckInput& in) {
     if (!extensions) return;
     const Json* media = optionalObject(root.nested("extensions"), *extensions, kMediaExtension);
     if (!media) return;
-    // Only the two keys the engine reads; the rest of the object belongs to the plugin.
+    // Every key of the root object is the engine's; other tools' data belongs under `extras`.
     const JsonPlace place{&in.file, std::string("root extension ") + kMediaExtension, ""};
+    const std::array<std::string, 5> known = {"background", "ambient", "fog", "scattering", "extras"};
+    for (const auto& item : media->items())
+        if (std::find(known.begin(), known.end(), item.key()) == known.end())
+            place.fail(item.key(), "unknown key (the root object has background, ambient, fog, scattering and extras)");
     optionalNumberArray(place, *media, "background", 3, 0.0, kHuge);
     optionalNumberArray(place, *media, "ambient", 3, 0.0, kHuge);
+    optionalEnum(place, *media, "scattering", {"multiple", "single"});
     checkFog(place, *media);
 }
 

@@ -296,6 +296,7 @@ Scene loadSceneFromSource(GltfSource src, const std::filesystem::path& file) {
             scene.environment.background = readColor(media, "background");
             scene.environment.ambient = readColor(media, "ambient");
             scene.environment.fog = readFog(media);
+            if (media.value("scattering", std::string("multiple")) == "single") scene.environment.scattering = Scattering::Single;
         }
     }
     scene.document = document;

@@ -37,6 +37,7 @@ inline assets::RgbImage renderReference(const std::filesystem::path& scene, int 
     sandbox::Session session({.scene = scene});
     const auto inputs = sandbox::makeReferenceScene(session, "", width, height);
     media::reference::ReferenceSettings settings;
+    settings.scattering = assets::Scattering::Single;  // today's real-time model
     settings.width = width;
     settings.height = height;
     settings.threads = 2;

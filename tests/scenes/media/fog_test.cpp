@@ -47,6 +47,7 @@ Frames render(std::shared_ptr<const assets::Scene> scene, double time = 0.0) {
     out.realtime = session.renderRealtime(kWidth, kHeight);
     const auto inputs = sandbox::makeReferenceScene(session, "", kWidth, kHeight);
     nimbus::media::reference::ReferenceSettings settings;
+    settings.scattering = assets::Scattering::Single;  // today's real-time model
     settings.width = kWidth;
     settings.height = kHeight;
     settings.progress = false;

@@ -41,6 +41,7 @@ inline sandbox::SessionOptions particlesMode(const std::filesystem::path& scene,
 inline assets::RgbImage renderReference(sandbox::Session& session, int width, int height) {
     const auto scene = sandbox::makeReferenceScene(session, "", width, height);
     nimbus::media::reference::ReferenceSettings settings;
+    settings.scattering = assets::Scattering::Single;  // today's real-time model
     settings.width = width;
     settings.height = height;
     settings.progress = false;

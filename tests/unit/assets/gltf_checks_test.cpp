@@ -87,6 +87,8 @@ INSTANTIATE_TEST_SUITE_P(
         MalformedCase{"node_own_child.gltf", {"node \"Tri\" (nodes[0])", "children[0]", "its own child"}},
         MalformedCase{"bad_background.gltf", {"NIMBUS_participating_media", "background", "3 numbers"}},
         MalformedCase{"negative_ambient.gltf", {"NIMBUS_participating_media", "ambient[1]", "-0.2"}},
+        MalformedCase{"root_typo.gltf", {"root extension NIMBUS_participating_media", "ambeint", "unknown key"}},
+        MalformedCase{"unknown_scattering.gltf", {"root extension NIMBUS_participating_media", "scattering", "\"double\""}},
         MalformedCase{"camera_zero_yfov.gltf", {"cameras[0]", "perspective.yfov", "(0, pi)"}},
         MalformedCase{"camera_zfar_before_znear.gltf", {"camera \"Cam\" (cameras[0])", "perspective.zfar", "greater than znear"}},
         MalformedCase{"camera_negative_znear.gltf", {"cameras[0]", "perspective.znear", "must be > 0"}},

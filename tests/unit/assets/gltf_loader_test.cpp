@@ -181,8 +181,9 @@ TEST(GltfLoader, CamerasLightsAndEnvironmentAreRead) {
 
     EXPECT_EQ(scene.environment.background, glm::vec3(0.1f, 0.2f, 0.3f));
     EXPECT_EQ(scene.environment.ambient, glm::vec3(0.01f, 0.02f, 0.03f));
-    // Keys of the root media extension other than background / ambient are kept for the plugin.
-    EXPECT_EQ(scene.extensions[kMediaExtension]["quality"], "plugin decides");
+    EXPECT_EQ(scene.environment.scattering, Scattering::Multiple) << "the default model";
+    // Other tools' data under the root object's extras is kept as written.
+    EXPECT_EQ(scene.extensions[kMediaExtension]["extras"]["quality"], "another tool's data");
     EXPECT_EQ(scene.rootNodes, (std::vector<int>{0, 1, 2, 3, 4}));
 }
 

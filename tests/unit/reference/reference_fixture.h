@@ -8,6 +8,7 @@
 
 #include "nimbus/media/optics.h"
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/volume.h"
 #include "nimbus/media/reference/camera_rays.h"
 #include "nimbus/media/reference/reference_renderer.h"
 #include "numeric_quadrature.h"
@@ -18,6 +19,7 @@ namespace nimbus::media::test {
 struct TestScene {
     fixtures::SceneBuilder builder;
     ParticleSet particles;
+    std::vector<Volume> volumes;
     assets::ResolvedCamera camera = fixtures::lookAt({0.0, 0.0, 10.0}, {0.0, 0.0, 0.0});
     std::vector<assets::ResolvedLight> lights;
     std::vector<glm::dmat4> world;
@@ -30,12 +32,14 @@ struct TestScene {
         in.camera = camera;
         in.lights = lights;
         in.particles = &particles;
+        in.volumes = &volumes;
         return in;
     }
 };
 
 inline reference::ReferenceSettings settings(int w, int h, double tolerance = 1e-4, int threads = 2) {
     reference::ReferenceSettings s;
+    s.scattering = assets::Scattering::Single;  // the analytic cases of the single-scattering model
     s.width = w;
     s.height = h;
     s.tolerance = tolerance;

@@ -131,6 +131,25 @@ void parseParticles(const GltfDocument& scene, const nlohmann::json& object, con
     }
 }
 
+void parseVolume(const nlohmann::json& object, const Where& where, MediaNode& out) {
+    if (!object.is_object()) where.fail("volume", "must be an object");
+    refuseUnknownKeys(object, {"shape", "size"}, where, "volume");
+    if (!object.contains("shape")) where.fail("volume.shape", "is required: \"box\" or \"ellipsoid\"");
+    const nlohmann::json& shape = object["shape"];
+    if (shape == "box") out.volumeShape = VolumeShape::Box;
+    else if (shape == "ellipsoid") out.volumeShape = VolumeShape::Ellipsoid;
+    else where.fail("volume.shape", "unknown shape " + shape.dump() + " (known: \"box\", \"ellipsoid\")");
+    if (!object.contains("size")) where.fail("volume.size", "is required: [x, y, z] in metres");
+    const nlohmann::json& size = object["size"];
+    if (!size.is_array() || size.size() != 3) where.fail("volume.size", "must be an array of 3 numbers");
+    for (int c = 0; c < 3; ++c) {
+        const std::string element = "volume.size[" + std::to_string(c) + "]";
+        const double v = readNumber(size[static_cast<std::size_t>(c)], where, element);
+        if (!(v > 0.0) || v > 1e12) where.fail(element, "must be > 0 (and at most 1e12 m), not " + size[static_cast<std::size_t>(c)].dump());
+        out.volumeSize[c] = v;
+    }
+}
+
 }  // namespace
 
 MediaScene parseMediaScene(const GltfDocument& scene) {
@@ -145,7 +164,7 @@ MediaScene parseMediaScene(const GltfDocument& scene) {
         Where where{file, name.empty() ? index : "node \"" + name + "\" (" + index + ")", std::string("extensions.") + kMediaExtension};
         const nlohmann::json& object = *extension;
         if (!object.is_object()) where.fail("", "must be an object");
-        refuseUnknownKeys(object, {"medium", "particles", "emitter", "render"}, where, "");
+        refuseUnknownKeys(object, {"medium", "particles", "volume", "emitter", "render"}, where, "");
         if (!object.contains("medium")) where.fail("medium", "is required");
 
         MediaNode out;
@@ -153,6 +172,7 @@ MediaScene parseMediaScene(const GltfDocument& scene) {
         out.name = name;
         out.medium = parseMedium(object["medium"], where);
         if (object.contains("particles")) parseParticles(scene, object["particles"], where, out);
+        if (object.contains("volume")) parseVolume(object["volume"], where, out);
         if (object.contains("emitter")) out.emitter = object["emitter"];
         if (object.contains("render")) out.render = object["render"];
         if (!out.emitter.is_null()) (void)parseNodeEmitter(scene, out);  // refuse a bad emitter at load, not mid-run
@@ -195,6 +215,17 @@ ParticleSet staticParticles(const MediaScene& media, const std::vector<glm::dmat
         appendCloudParticles(set, n.medium, n.localPositions, n.radii, n.densities, m);
     }
     return set;
+}
+
+std::vector<Volume> sceneVolumes(const MediaScene& media, const std::vector<glm::dmat4>& world) {
+    std::vector<Volume> out;
+    for (const MediaNode& n : media.nodes) {
+        if (!n.volumeShape) continue;
+        const glm::dmat4 m = n.node >= 0 && static_cast<std::size_t>(n.node) < world.size() ? world[static_cast<std::size_t>(n.node)]
+                                                                                            : glm::dmat4(1.0);
+        out.push_back(makeVolume(*n.volumeShape, m, n.volumeSize, n.medium));
+    }
+    return out;
 }
 
 ParticleSet particlesAtTime(const GltfDocument& scene, const MediaScene& media, double timeSeconds) {

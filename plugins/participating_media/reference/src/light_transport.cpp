@@ -7,19 +7,44 @@
 
 namespace nimbus::media::reference {
 
-LightTransport::LightTransport(const std::vector<assets::ResolvedLight>& lights, const raycast::MeshRaycaster& meshes,
-                               const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& ambient)
-    : lights_(lights), meshes_(meshes), bvh_(bvh), particles_(particles), ambient_(ambient) {}
+LightTransport::LightTransport(const std::vector<assets::ResolvedLight>& lights, const raycast::MeshRaycaster& meshes, const ParticleBvh& bvh,
+                               const ParticleSet& particles, const std::vector<Volume>& volumes, const glm::dvec3& sourceAmbient,
+                               const glm::dvec3& surfaceAmbient)
+    : lights_(lights), meshes_(meshes), bvh_(bvh), particles_(particles), volumes_(volumes), sourceAmbient_(sourceAmbient),
+      surfaceAmbient_(surfaceAmbient) {}
 
-double LightTransport::transmittanceToLight(const glm::dvec3& x, const glm::dvec3& toLight, double distance) const {
+double LightTransport::opticalDepthToLight(const glm::dvec3& x, const glm::dvec3& toLight, double distance) const {
     double tau = 0.0;
+    for (const Volume& v : volumes_) {
+        const VolumeChord chord = volumeChord(v, x, toLight);
+        if (chord.hit()) tau += v.sigma() * std::max(0.0, std::min(chord.exit, distance) - std::max(chord.enter, 0.0));
+    }
+    if (tau >= kOpaqueDepth) return tau;
     bvh_.forEachOnSegment(x, toLight, 0.0, distance, [&](std::uint32_t i) {
         const double radius = particles_.radius[i];
         const ChordGeometry chord = chordGeometry(x, toLight, particles_.position[i], radius);
         tau += particleOpticalDepth(chord, particles_.sigma[i], radius, 0.0, distance);
         return tau < kOpaqueDepth;
     });
+    return tau;
+}
+
+double LightTransport::transmittanceToLight(const glm::dvec3& x, const glm::dvec3& toLight, double distance) const {
+    const double tau = opticalDepthToLight(x, toLight, distance);
     return tau < kOpaqueDepth ? transmittance(tau) : 0.0;
+}
+
+glm::dvec3 LightTransport::directLight(const glm::dvec3& x, const glm::dvec3& dir, PhaseFunction phase, double g) const {
+    glm::dvec3 sum(0.0);
+    for (const assets::ResolvedLight& light : lights_) {
+        const assets::LightSample sample = assets::sampleLight(light, x);
+        if (sample.irradiance == glm::dvec3(0.0)) continue;
+        const double p = phaseValue(phase, g, glm::dot(sample.toLight, dir));
+        if (!(p > 0.0) || meshes_.occluded(x, sample.toLight, sample.distance)) continue;
+        const double T = transmittanceToLight(x, sample.toLight, sample.distance);
+        if (T > 0.0) sum += sample.irradiance * (p * T);
+    }
+    return sum;
 }
 
 glm::dvec3 LightTransport::mediumSource(const glm::dvec3& origin, const glm::dvec3& dir, const ViewRayMedium& medium,
@@ -32,11 +57,11 @@ glm::dvec3 LightTransport::mediumSource(const glm::dvec3& origin, const glm::dve
 
     glm::dvec3 scatter(0.0), emission(0.0);
     for (std::size_t j = 0; j < count; ++j) {
-        const std::uint32_t i = rayParticles[active[j]].index;
-        scatter += weights[j] * glm::dvec3(particles_.albedo[i]);
-        emission += weights[j] * glm::dvec3(particles_.emission[i]);
+        const RayParticle& rp = rayParticles[active[j]];
+        scatter += weights[j] * glm::dvec3(albedo(rp));
+        emission += weights[j] * glm::dvec3(this->emission(rp));
     }
-    glm::dvec3 source = ambient_ * scatter + emission;
+    glm::dvec3 source = sourceAmbient_ * scatter + emission;
     if (scatter == glm::dvec3(0.0)) return source / sigmaT;  // albedo 0: lights cannot contribute
 
     const glm::dvec3 x = origin + t * dir;
@@ -50,13 +75,13 @@ glm::dvec3 LightTransport::mediumSource(const glm::dvec3& origin, const glm::dve
         PhaseFunction lastPhase = PhaseFunction::HenyeyGreenstein;
         double p = 0.0;
         for (std::size_t j = 0; j < count; ++j) {
-            const std::uint32_t i = rayParticles[active[j]].index;
-            if (particles_.g[i] != lastG || particles_.phase[i] != lastPhase) {
-                lastG = particles_.g[i];
-                lastPhase = particles_.phase[i];
+            const RayParticle& rp = rayParticles[active[j]];
+            if (g(rp) != lastG || phase(rp) != lastPhase) {
+                lastG = g(rp);
+                lastPhase = phase(rp);
                 p = phaseValue(lastPhase, lastG, cosTheta);
             }
-            phased += (weights[j] * p) * glm::dvec3(particles_.albedo[i]);
+            phased += (weights[j] * p) * glm::dvec3(albedo(rp));
         }
         if (phased == glm::dvec3(0.0)) continue;
         if (meshes_.occluded(x, sample.toLight, sample.distance)) continue;
@@ -79,7 +104,7 @@ glm::dvec3 LightTransport::surfaceRadiance(const raycast::MeshHit& hit, const gl
         const double T = transmittanceToLight(hit.position, sample.toLight, sample.distance);
         direct += sample.irradiance * (cosine * T);
     }
-    return baseColor * (direct / kPi + ambient_);
+    return baseColor * (direct / kPi + surfaceAmbient_);
 }
 
 }  // namespace nimbus::media::reference

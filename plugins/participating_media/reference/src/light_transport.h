@@ -1,7 +1,10 @@
 #pragma once
 // Light arriving at points of the scene (DESIGN.md §2): per light, the irradiance E_l
 // (assets::sampleLight) × mesh visibility V_l (Embree) × medium transmittance T_l (closed form over the
-// particles the BVH finds). Used for the in-scattering source at medium points and for mesh shading.
+// particles the BVH finds and the volumes). Used for the in-scattering source at medium points and
+// for mesh shading. `sourceAmbient` is what every medium point scatters unshadowed: the ambient in
+// the single-scattering model, 0 in the multiple one (where the environment is a light the paths
+// of scattering_paths.h sample).
 //
 // Does not: integrate along view rays (reference_renderer.cpp does), or cache anything between calls.
 #include <vector>
@@ -21,11 +24,25 @@ inline constexpr double kOpaqueDepth = 64.0;
 
 class LightTransport {
 public:
-    LightTransport(const std::vector<assets::ResolvedLight>& lights, const raycast::MeshRaycaster& meshes,
-                   const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& ambient);
+    LightTransport(const std::vector<assets::ResolvedLight>& lights, const raycast::MeshRaycaster& meshes, const ParticleBvh& bvh,
+                   const ParticleSet& particles, const std::vector<Volume>& volumes, const glm::dvec3& sourceAmbient,
+                   const glm::dvec3& surfaceAmbient);
 
-    // T_l: exp(-τ) through every particle on the segment x + s·toLight, s in [0, distance].
+    // T_l: exp(-τ) through every particle and volume on the segment x + s·toLight, s in [0, distance].
     double transmittanceToLight(const glm::dvec3& x, const glm::dvec3& toLight, double distance) const;
+    // The optical depth itself, stopping early once it is past kOpaqueDepth.
+    double opticalDepthToLight(const glm::dvec3& x, const glm::dvec3& toLight, double distance) const;
+
+    // Σ_l p(θ_l) E_l V_l T_l at x for light arriving towards `dir` (x seen along dir), with one
+    // phase function: what a path vertex sends on (scattering_paths.cpp).
+    glm::dvec3 directLight(const glm::dvec3& x, const glm::dvec3& dir, PhaseFunction phase, double g) const;
+
+    // A ray particle's optical properties (a particle's or a volume's).
+    const glm::vec3& albedo(const RayParticle& p) const { return p.volume ? volumes_[p.index].medium.albedo : particles_.albedo[p.index]; }
+    const glm::vec3& emission(const RayParticle& p) const { return p.volume ? volumes_[p.index].medium.emission : particles_.emission[p.index]; }
+    float g(const RayParticle& p) const { return p.volume ? volumes_[p.index].medium.g : particles_.g[p.index]; }
+    PhaseFunction phase(const RayParticle& p) const { return p.volume ? volumes_[p.index].medium.phase : particles_.phase[p.index]; }
+    const std::vector<Volume>& volumes() const { return volumes_; }
 
     // The σ-weighted source S̄ at ray parameter t of a view ray (x = origin + t·dir), from the active
     // particles of `piece`:
@@ -42,7 +59,8 @@ private:
     const raycast::MeshRaycaster& meshes_;
     const ParticleBvh& bvh_;
     const ParticleSet& particles_;
-    glm::dvec3 ambient_;
+    const std::vector<Volume>& volumes_;
+    glm::dvec3 sourceAmbient_, surfaceAmbient_;
 };
 
 }  // namespace nimbus::media::reference

@@ -17,6 +17,7 @@
 #include "nimbus/media/particle_bvh.h"
 #include "nimbus/media/reference/camera_rays.h"
 #include "nimbus/raycast/mesh_raycaster.h"
+#include "scattering_paths.h"
 #include "view_ray_medium.h"
 
 namespace nimbus::media::reference {
@@ -32,7 +33,12 @@ struct Scratch {
     MediumQuadrature quadrature;
     std::vector<double> weights;
     std::vector<double> cuts;
+    ViewRayMedium flight;  // a path's flights
+    std::vector<double> pathWeights;
 };
+
+// Each pixel's paths draw from a stream of their own (PathRandom), independent of threads.
+constexpr int kMaxSpp = 1 << 20;
 
 // Where along origin + t·dir the in-scattered light of a point or spot light peaks: its closest
 // approach t_l, and t_l ± b, ± 4b, ± 16b around it (b the ray's distance from the light), so that the
@@ -59,7 +65,11 @@ struct ReferenceRenderer::Impl {
     ReferenceInputs inputs;
     ReferenceSettings settings;
     ParticleSet noParticles;
+    std::vector<Volume> noVolumes;
     const ParticleSet* particles = nullptr;
+    const std::vector<Volume>* volumes = nullptr;
+    bool multiple = false;                 // the model, from the scene or the settings
+    std::unique_ptr<ScatteringPaths> paths;  // multiple scattering with a medium
     ParticleBvh bvh;
     std::unique_ptr<raycast::MeshRaycaster> meshes;
     std::unique_ptr<BaseColorSampler> baseColor;
@@ -69,8 +79,10 @@ struct ReferenceRenderer::Impl {
     double fogReach = 0.0;  // how far background rays see fog
     double floor = 0.0;
 
-    RayRadiance trace(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear, double meshFar,
+    RayRadiance trace(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear, double meshFar, std::uint64_t stream,
                       Scratch& scratch) const;
+    // The paths' mean and standard error for one camera ray whose medium scratch.medium holds.
+    void tracePaths(const glm::dvec3& origin, const glm::dvec3& dir, std::uint64_t stream, Scratch& scratch, RayRadiance& out) const;
     bool doubleSided(int material) const {
         return material >= 0 && static_cast<std::size_t>(material) < inputs.scene->materials.size() &&
                inputs.scene->materials[static_cast<std::size_t>(material)].doubleSided;
@@ -82,16 +94,23 @@ ReferenceRenderer::ReferenceRenderer(const ReferenceInputs& inputs, const Refere
     if (!inputs.scene || !inputs.world) throw std::invalid_argument("reference: inputs need a scene and its world transforms");
     if (settings.width <= 0 || settings.height <= 0) throw std::invalid_argument("reference: image size must be positive");
     if (!(settings.tolerance > 0.0)) throw std::invalid_argument("reference: tolerance must be > 0");
+    if (settings.spp < 1 || settings.spp > kMaxSpp) throw std::invalid_argument("reference: spp must be in 1..2^20");
     Impl& m = *impl_;
     m.inputs = inputs;
     m.settings = settings;
     m.particles = inputs.particles ? inputs.particles : &m.noParticles;
+    m.volumes = inputs.volumes ? inputs.volumes : &m.noVolumes;
     m.bvh.build(*m.particles);
     m.meshes = std::make_unique<raycast::MeshRaycaster>(*inputs.scene, *inputs.world);
     m.baseColor = std::make_unique<BaseColorSampler>(*inputs.scene);
     m.background = glm::dvec3(inputs.scene->environment.background);
     m.ambient = glm::dvec3(inputs.scene->environment.ambient);
-    m.light = std::make_unique<LightTransport>(m.inputs.lights, *m.meshes, m.bvh, *m.particles, m.ambient);
+    const assets::Scattering model = settings.scattering.value_or(inputs.scene->environment.scattering);
+    m.multiple = model == assets::Scattering::Multiple && !(m.particles->empty() && m.volumes->empty());
+    // In the multiple model the ambient is an environment the paths bring in; meshes keep it unshadowed.
+    m.light = std::make_unique<LightTransport>(m.inputs.lights, *m.meshes, m.bvh, *m.particles, *m.volumes,
+                                               m.multiple ? glm::dvec3(0.0) : m.ambient, m.ambient);
+    if (m.multiple) m.paths = std::make_unique<ScatteringPaths>(*m.light, *m.meshes, m.bvh, *m.particles, m.ambient);
     m.frame = makeCameraFrame(inputs.camera, settings.width, settings.height);
     m.fogReach = assets::fogBackgroundDistance(inputs.scene->environment.fog, inputs.camera.params.zfar);
 
@@ -113,14 +132,36 @@ ReferenceRenderer::~ReferenceRenderer() = default;
 
 double ReferenceRenderer::absoluteFloor() const { return impl_->floor; }
 
+void ReferenceRenderer::Impl::tracePaths(const glm::dvec3& origin, const glm::dvec3& dir, std::uint64_t stream, Scratch& scratch,
+                                         RayRadiance& out) const {
+    const assets::Fog& fog = inputs.scene->environment.fog;
+    glm::dvec3 sum(0.0), squares(0.0);
+    for (int s = 0; s < settings.spp; ++s) {
+        PathRandom random(settings.seed, stream * static_cast<std::uint64_t>(kMaxSpp) + static_cast<std::uint64_t>(s));
+        const PathSample path = paths->sample(origin, dir, scratch.medium, random, scratch.flight, scratch.pathWeights);
+        glm::dvec3 value = path.radiance;
+        // Fog sees the scattered light where the path left the camera ray; its colour is the quadrature's.
+        if (fog.mode != assets::FogMode::None) value *= assets::fogFactor(fog, origin.y, dir.y, path.firstDistance);
+        sum += value;
+        squares += value * value;
+        out.evaluations += path.vertices;
+    }
+    const double n = settings.spp;
+    out.paths = sum / n;
+    const glm::dvec3 variance = glm::max(squares / n - out.paths * out.paths, glm::dvec3(0.0)) * (n / std::max(n - 1.0, 1.0));
+    out.standardError = glm::sqrt(variance / n);
+    out.inScattered += out.paths;
+    out.radiance += out.paths;
+}
+
 RayRadiance ReferenceRenderer::Impl::trace(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear,
-                                           double meshFar, Scratch& scratch) const {
+                                           double meshFar, std::uint64_t stream, Scratch& scratch) const {
     RayRadiance out;
     const std::optional<raycast::MeshHit> hit = meshes->closestHit(origin, dir, meshNear, meshFar);
     out.hitMesh = hit.has_value();
     out.distance = hit ? hit->distance : meshFar;
 
-    scratch.medium.build(bvh, *particles, origin, dir, out.distance);
+    scratch.medium.build(bvh, *particles, origin, dir, out.distance, *volumes);
     out.opticalDepth = scratch.medium.totalOpticalDepth();
     out.transmittance = transmittance(out.opticalDepth);
 
@@ -153,26 +194,43 @@ RayRadiance ReferenceRenderer::Impl::trace(const glm::dvec3& origin, const glm::
     out.radiance += r.value;
     out.evaluations = r.evaluations;
     out.converged = r.converged;
+    if (paths) tracePaths(origin, dir, stream, scratch, out);
     return out;
 }
 
-RayRadiance ReferenceRenderer::traceRay(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear,
-                                        double meshFar) const {
+RayRadiance ReferenceRenderer::traceRay(const glm::dvec3& origin, const glm::dvec3& dir, double meshNear, double meshFar,
+                                        std::uint64_t stream) const {
     Scratch scratch;
-    return impl_->trace(origin, glm::normalize(dir), meshNear, meshFar, scratch);
+    return impl_->trace(origin, glm::normalize(dir), meshNear, meshFar, stream, scratch);
 }
 
 RayRadiance ReferenceRenderer::tracePixel(int x, int y) const {
     const CameraRay ray = cameraRay(impl_->frame, x, y);
     Scratch scratch;
-    return impl_->trace(ray.origin, ray.direction, ray.meshNear, ray.meshFar, scratch);
+    return impl_->trace(ray.origin, ray.direction, ray.meshNear, ray.meshFar,
+                        static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(impl_->settings.width) + static_cast<std::uint64_t>(x), scratch);
 }
 
-assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats) const {
+bool ReferenceRenderer::multiple() const { return impl_->multiple; }
+
+namespace {
+
+// What one worker counted over its tiles.
+struct Tally {
+    std::size_t evaluations = 0, unconverged = 0, paths = 0;
+    double standardError = 0.0, radiance = 0.0;  // Σ over its pixels, of luminance
+};
+
+double luminanceOf(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+}  // namespace
+
+assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats, assets::RgbImage* standardError) const {
     const Impl& m = *impl_;
     const auto start = std::chrono::steady_clock::now();
     const int width = m.settings.width, height = m.settings.height;
     assets::RgbImage image(width, height);
+    if (standardError) *standardError = assets::RgbImage(width, height);
     const int tilesX = (width + kTileSize - 1) / kTileSize, tilesY = (height + kTileSize - 1) / kTileSize;
     const int tiles = tilesX * tilesY;
     int threads = m.settings.threads > 0 ? m.settings.threads : static_cast<int>(std::thread::hardware_concurrency());
@@ -182,11 +240,24 @@ assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats) const {
     if (m.settings.progress) progress = std::make_unique<ProgressBar>("reference", static_cast<std::size_t>(tiles));
     std::atomic<int> nextTile{0};
     if (m.settings.watch) m.settings.watch->tilesTotal.store(tiles);
-    std::vector<std::size_t> evaluations(static_cast<std::size_t>(threads), 0), unconverged(static_cast<std::size_t>(threads), 0);
+    std::vector<Tally> tally(static_cast<std::size_t>(threads));
     std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
 
     // Tiles are handed out dynamically, but every pixel is computed from the inputs alone and written
-    // to its own place, so the image does not depend on which thread did what.
+    // to its own place (its paths from its own random stream), so the image does not depend on which
+    // thread did what.
+    auto pixel = [&](int x, int y, Scratch& scratch, Tally& t) {
+        const CameraRay ray = cameraRay(m.frame, x, y);
+        const std::uint64_t stream = static_cast<std::uint64_t>(y) * static_cast<std::uint64_t>(width) + static_cast<std::uint64_t>(x);
+        const RayRadiance r = m.trace(ray.origin, ray.direction, ray.meshNear, ray.meshFar, stream, scratch);
+        image.set(x, y, glm::vec3(r.radiance));
+        if (standardError) standardError->set(x, y, glm::vec3(r.standardError));
+        t.evaluations += static_cast<std::size_t>(r.evaluations);
+        t.unconverged += r.converged ? 0 : 1;
+        t.paths += m.paths ? static_cast<std::size_t>(m.settings.spp) : 0;
+        t.standardError += luminanceOf(r.standardError);
+        t.radiance += luminanceOf(r.radiance);
+    };
     auto work = [&](std::size_t worker) {
         try {
             Scratch scratch;
@@ -194,13 +265,7 @@ assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats) const {
                 if (m.settings.watch && m.settings.watch->cancel.load()) break;
                 const int x0 = (tile % tilesX) * kTileSize, y0 = (tile / tilesX) * kTileSize;
                 for (int y = y0; y < std::min(y0 + kTileSize, height); ++y)
-                    for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) {
-                        const CameraRay ray = cameraRay(m.frame, x, y);
-                        const RayRadiance r = m.trace(ray.origin, ray.direction, ray.meshNear, ray.meshFar, scratch);
-                        image.set(x, y, glm::vec3(r.radiance));
-                        evaluations[worker] += static_cast<std::size_t>(r.evaluations);
-                        unconverged[worker] += r.converged ? 0 : 1;
-                    }
+                    for (int x = x0; x < std::min(x0 + kTileSize, width); ++x) pixel(x, y, scratch, tally[worker]);
                 if (progress) progress->advance();
                 if (m.settings.watch) m.settings.watch->tilesDone.fetch_add(1);
             }
@@ -218,19 +283,26 @@ assets::RgbImage ReferenceRenderer::render(ReferenceStats* stats) const {
         if (e) std::rethrow_exception(e);
 
     if (stats) {
+        *stats = ReferenceStats{};
         stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        stats->evaluations = 0;
-        stats->unconvergedPixels = 0;
-        for (std::size_t t = 0; t < evaluations.size(); ++t) {
-            stats->evaluations += evaluations[t];
-            stats->unconvergedPixels += unconverged[t];
+        stats->multiple = m.multiple;
+        for (const Tally& t : tally) {
+            stats->evaluations += t.evaluations;
+            stats->unconvergedPixels += t.unconverged;
+            stats->paths += t.paths;
+            stats->meanStandardError += t.standardError;
+            stats->meanRadiance += t.radiance;
         }
+        const double pixels = static_cast<double>(width) * height;
+        stats->meanStandardError /= pixels;
+        stats->meanRadiance /= pixels;
     }
     return image;
 }
 
-assets::RgbImage renderReference(const ReferenceInputs& inputs, const ReferenceSettings& settings, ReferenceStats* stats) {
-    return ReferenceRenderer(inputs, settings).render(stats);
+assets::RgbImage renderReference(const ReferenceInputs& inputs, const ReferenceSettings& settings, ReferenceStats* stats,
+                                 assets::RgbImage* standardError) {
+    return ReferenceRenderer(inputs, settings).render(stats, standardError);
 }
 
 }  // namespace nimbus::media::reference

@@ -8,7 +8,7 @@
 namespace nimbus::media::reference {
 
 void ViewRayMedium::build(const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& origin,
-                          const glm::dvec3& dir, double end) {
+                          const glm::dvec3& dir, double end, const std::vector<Volume>& volumes) {
     rayParticles_.clear();
     breaks_.clear();
     cumulative_.clear();
@@ -19,6 +19,7 @@ void ViewRayMedium::build(const ParticleBvh& bvh, const ParticleSet& particles, 
     candidates_.clear();
     totalOpticalDepth_ = 0.0;
     collect(bvh, particles, origin, dir, end);
+    collectVolumes(volumes, origin, dir, end);
     if (rayParticles_.empty()) return;
     buildPieces();
     buildClusters(pieceDepths());
@@ -57,6 +58,26 @@ void ViewRayMedium::collect(const ParticleBvh& bvh, const ParticleSet& particles
     }
 }
 
+void ViewRayMedium::collectVolumes(const std::vector<Volume>& volumes, const glm::dvec3& origin, const glm::dvec3& dir, double end) {
+    for (std::size_t v = 0; v < volumes.size(); ++v) {
+        const VolumeChord chord = volumeChord(volumes[v], origin, dir);
+        RayParticle p;
+        p.index = static_cast<std::uint32_t>(v);
+        p.volume = true;
+        p.enter = std::max(0.0, chord.enter);
+        p.exit = std::min(end, chord.exit);
+        p.sigma = p.peak = volumes[v].sigma();
+        if (!chord.hit() || !(p.exit > p.enter) || !(p.sigma > 0.0)) continue;
+        rayParticles_.push_back(p);
+        totalOpticalDepth_ += p.sigma * (p.exit - p.enter);
+    }
+}
+
+double ViewRayMedium::depthInPiece(const RayParticle& p, double pieceStart, double erfStart, double b) {
+    if (p.volume) return p.sigma * (b - pieceStart);
+    return p.scale * (std::erf(p.sqrtK * (b - p.tClosest)) - erfStart);
+}
+
 // Pieces between consecutive chord ends, and which particles are active in each (CSR). A particle
 // covers pieces [index of enter, index of exit): both values are breakpoints, so the binary searches
 // find them exactly. Leaves each ray particle's first and end piece in candidates_.
@@ -93,6 +114,14 @@ std::vector<double> ViewRayMedium::pieceDepths() {
     std::vector<std::uint32_t> fill(activeStart_.begin(), activeStart_.end() - 1);
     for (std::size_t r = 0; r < rayParticles_.size(); ++r) {
         const RayParticle& p = rayParticles_[r];
+        if (p.volume) {  // constant: σ times each piece's length
+            for (std::uint32_t k = span[2 * r]; k < span[2 * r + 1]; ++k) {
+                activeErfStart_[fill[k]] = 0.0;
+                active_[fill[k]++] = static_cast<std::uint32_t>(r);
+                pieceDepth[k] += p.sigma * (breaks_[k + 1] - breaks_[k]);
+            }
+            continue;
+        }
         double previous = std::erf(p.sqrtK * (breaks_[span[2 * r]] - p.tClosest));
         for (std::uint32_t k = span[2 * r]; k < span[2 * r + 1]; ++k) {
             const double next = std::erf(p.sqrtK * (breaks_[k + 1] - p.tClosest));
@@ -129,8 +158,11 @@ double ViewRayMedium::extinctionAt(std::uint32_t piece, double t, std::vector<do
     double sum = 0.0;
     for (const std::uint32_t* a = activeBegin(piece); a != activeEnd(piece); ++a) {
         const RayParticle& p = rayParticles_[*a];
-        const double x = p.sqrtK * (t - p.tClosest);
-        const double term = p.peak * std::exp(-x * x);
+        double term = p.peak;
+        if (!p.volume) {
+            const double x = p.sqrtK * (t - p.tClosest);
+            term = p.peak * std::exp(-x * x);
+        }
         sum += term;
         if (terms) terms->push_back(term);
     }
@@ -145,10 +177,8 @@ double ViewRayMedium::opticalDepthTo(std::uint32_t cluster, double t) const {
         std::upper_bound(breaks_.begin() + c.firstPiece, breaks_.begin() + c.endPiece, t) - breaks_.begin()) - 1;
     double s = cumulative_[k];
     const double* erfStart = activeErfStart_.data() + activeStart_[k];
-    for (const std::uint32_t* a = activeBegin(k); a != activeEnd(k); ++a) {
-        const RayParticle& p = rayParticles_[*a];
-        s += p.scale * (std::erf(p.sqrtK * (t - p.tClosest)) - erfStart[a - activeBegin(k)]);
-    }
+    for (const std::uint32_t* a = activeBegin(k); a != activeEnd(k); ++a)
+        s += depthInPiece(rayParticles_[*a], breaks_[k], erfStart[a - activeBegin(k)], t);
     return std::clamp(s, cumulative_[k], cumulative_[k + 1]);
 }
 
@@ -180,9 +210,13 @@ RaySample ViewRayMedium::locate(std::uint32_t cluster, double s) const {
         double f = -target, slope = 0.0;
         for (const std::uint32_t* a = begin; a != end; ++a) {
             const RayParticle& p = rayParticles_[*a];
-            const double x = p.sqrtK * (t - p.tClosest);
-            f += p.scale * (std::erf(x) - erfStart[a - begin]);
-            slope += p.peak * std::exp(-x * x);
+            f += depthInPiece(p, lo0, erfStart[a - begin], t);
+            if (p.volume) {
+                slope += p.peak;
+            } else {
+                const double x = p.sqrtK * (t - p.tClosest);
+                slope += p.peak * std::exp(-x * x);
+            }
         }
         if (f == 0.0) break;
         if (f < 0.0) lo = t; else hi = t;

@@ -5,7 +5,10 @@
 // ray has the optical depth since the cluster start reached s?" (Newton on the closed form), which
 // is how the quadrature places its samples (reference_renderer.h, "Quadrature").
 //
-// Does not: evaluate lighting; own the particles (indices into the ParticleSet).
+// Volumes (volume.h) join the particles as pieces of constant extinction: their optical depth is
+// σ times the length, and everything below treats both alike.
+//
+// Does not: evaluate lighting; own the particles or volumes (indices into their lists).
 #include <cstdint>
 #include <vector>
 
@@ -13,13 +16,15 @@
 
 #include "nimbus/media/particle_bvh.h"
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/volume.h"
 
 namespace nimbus::media::reference {
 
 // Along the ray a particle's extinction is σ_i ρ_i(t) = peak · exp(-(√k (t - tClosest))²), so its optical
 // depth from t0 to t1 is scale · [erf(√k (t1 - tClosest)) - erf(√k (t0 - tClosest))].
 struct RayParticle {
-    std::uint32_t index = 0;  // into the ParticleSet
+    std::uint32_t index = 0;  // into the ParticleSet, or the volume list where `volume`
+    bool volume = false;      // constant extinction `sigma` over [enter, exit] (peak = σ, scale unused)
     double tClosest = 0.0, b2 = 0.0, halfChord = 0.0;
     double enter = 0.0, exit = 0.0;  // chord clipped to [0, end]
     double sigma = 0.0, radius = 0.0;
@@ -44,7 +49,7 @@ class ViewRayMedium {
 public:
     // Collects the particles on origin + t·dir, t in [0, end] (end may be +inf).
     void build(const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& origin, const glm::dvec3& dir,
-               double end);
+               double end, const std::vector<Volume>& volumes = {});
 
     bool empty() const { return clusters_.empty(); }
     // τ(0, end): the direct sum of each particle's closed form over its whole (clipped) chord.
@@ -70,6 +75,9 @@ public:
 
 private:
     void collect(const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& origin, const glm::dvec3& dir, double end);
+    void collectVolumes(const std::vector<Volume>& volumes, const glm::dvec3& origin, const glm::dvec3& dir, double end);
+    // A ray particle's optical depth over [a, b] inside one of its pieces, whose erf at the piece start is `erfStart`.
+    static double depthInPiece(const RayParticle& p, double pieceStart, double erfStart, double b);
     void buildPieces();
     std::vector<double> pieceDepths();
     void buildClusters(const std::vector<double>& pieceDepth);

@@ -138,10 +138,17 @@ struct Fog {
     double falloff = 0.0;  // 1/m (height): density · e^(−falloff·(y − base))
 };
 
+// Which optical model the medium follows (the root `scattering` field, docs/design.md §2):
+// `multiple` is the radiative transfer equation (light scattered any number of times, ambient a
+// uniform environment the medium attenuates and scatters); `single` is light scattered once, with
+// ambient an unshadowed sky every point of the medium scatters.
+enum class Scattering { Multiple, Single };
+
 struct Environment {
     glm::vec3 background{0.0f};  // radiance of rays that hit nothing
-    glm::vec3 ambient{0.0f};     // isotropic, unshadowed sky radiance
+    glm::vec3 ambient{0.0f};     // multiple: the environment's radiance; single: unshadowed sky radiance
     Fog fog;
+    Scattering scattering = Scattering::Multiple;
 };
 
 class Document;  // the parsed glTF file, kept for accessor reads and for saving

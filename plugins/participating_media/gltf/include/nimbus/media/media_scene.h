@@ -3,15 +3,19 @@
 // parsed and validated, and turned into world-space particles for a given time.
 //
 // Node object keys: "medium" (required), "particles" (a static cloud in the node's local frame),
-// "emitter" and "render" (kept as raw JSON for the systems that own them). Anything else is refused.
+// "volume" (a box or ellipsoid of the medium at constant extinction), "emitter" and "render" (kept
+// as raw JSON for the systems that own them). Anything else is refused.
 //   medium:    extinction > 0 (required), albedo [r,g,b] in [0,1] (default [1,1,1]), g in (-1,1)
 //              (default 0), emission [r,g,b] >= 0 (default 0), phase "henyey-greenstein" | "rayleigh".
 //   particles: position (accessor VEC3 float), radius (accessor SCALAR float, > 0),
 //              density (optional accessor SCALAR float, >= 0, default 1); equal counts.
+//   volume:    shape "box" | "ellipsoid" (required), size [x, y, z] > 0 (required): full extents in
+//              the node's frame, centred on it.
 // Every refusal is one nimbus::InputError naming the file, the node (index and name) and the field.
 //
 // Does not: simulate emitters (that system extends particlesAtTime); read the root object
 // (background/ambient belong to assets::Environment).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +24,7 @@
 
 #include "nimbus/media/gltf_document.h"
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/volume.h"
 
 namespace nimbus::media {
 
@@ -33,6 +38,8 @@ struct MediaNode {
     std::vector<glm::vec3> localPositions;  // the node's local frame
     std::vector<float> radii;
     std::vector<float> densities;  // same count as localPositions (1 where the file gave none)
+    std::optional<VolumeShape> volumeShape;  // a `volume` object
+    glm::dvec3 volumeSize{0.0};
     nlohmann::json emitter;        // null when absent
     nlohmann::json render;         // null when absent
 };
@@ -58,6 +65,9 @@ void appendCloudParticles(ParticleSet& out, const Medium& medium, const std::vec
 
 // Whether `world` scales uniformly (spheres stay spheres); callers warn when it does not.
 bool hasUniformScale(const glm::dmat4& world);
+
+// The volumes of the scene placed by `world` (a node's world transform, per node index).
+std::vector<Volume> sceneVolumes(const MediaScene& media, const std::vector<glm::dmat4>& world);
 
 // Every particle of the scene at `timeSeconds` for hosts without the ECS: the static clouds posed at
 // that time, then every emitter simulated from 0 (simulateEmittersTo), in node order — exactly the
