@@ -123,6 +123,16 @@ TEST(MediaScene, RefusesMalformedMedia) {
     expectRefusal({{"medium", {{"extinction", 1.0}, {"color", 1}}}}, {"medium.color", "unknown key"});
 }
 
+// A volume is checked field by field, and then refused whole: no renderer draws a scene's volumes yet.
+TEST(MediaScene, RefusesVolumes) {
+    const nlohmann::json ok = {{"extinction", 1.0}};
+    expectRefusal({{"medium", ok}, {"volume", {{"shape", "cone"}, {"size", {1, 1, 1}}}}}, {"volume.shape", "cone"});
+    expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 0, 1}}}}}, {"volume.size[1]", "> 0"});
+    expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, -2, 1}}}}}, {"volume.size[1]", "> 0"});
+    expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 1, 1}}, {"noise", 1}}}}, {"volume.noise", "unknown key"});
+    expectRefusal({{"medium", ok}, {"volume", {{"shape", "ellipsoid"}, {"size", {1, 1, 1}}}}}, {"volume", "not drawn yet"});
+}
+
 TEST(MediaScene, RefusesMalformedParticles) {
     const nlohmann::json medium = {{"extinction", 1.0}};
     {

@@ -172,7 +172,12 @@ MediaScene parseMediaScene(const GltfDocument& scene) {
         out.name = name;
         out.medium = parseMedium(object["medium"], where);
         if (object.contains("particles")) parseParticles(scene, object["particles"], where, out);
-        if (object.contains("volume")) parseVolume(object["volume"], where, out);
+        if (object.contains("volume")) {
+            parseVolume(object["volume"], where, out);
+            // Checked in full above, so the message says what is wrong with it first; refused until a
+            // scene's volumes reach the renderers, rather than dropped from the picture.
+            where.fail("volume", "is not drawn yet: neither the real-time modes nor `sandbox reference` read a scene's volumes");
+        }
         if (object.contains("emitter")) out.emitter = object["emitter"];
         if (object.contains("render")) out.render = object["render"];
         if (!out.emitter.is_null()) (void)parseNodeEmitter(scene, out);  // refuse a bad emitter at load, not mid-run
