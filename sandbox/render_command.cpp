@@ -42,6 +42,7 @@ struct RenderOptions {
     float exposure = 1.0f;
     bool floor = false;
     std::string budget;  // --budget-ms, as typed
+    std::string scattering;  // empty: the scene's model
 };
 
 // --budget-ms: a finite positive number of milliseconds; 0 when not given.
@@ -121,6 +122,7 @@ void writeStats(const RenderOptions& o, Session& session, const gpu::Context& co
 // The session for the options, with rendering on at width×height; bad input is refused before any GL work.
 std::unique_ptr<Session> openSession(const RenderOptions& o, int width, int height) {
     SessionOptions options{o.scene, o.time, o.settings};
+    if (!o.scattering.empty()) options.scattering = parseScattering(o.scattering);
     if (!o.mode.empty()) options.options.emplace_back("mode=" + o.mode, "--mode");
     if (!o.quality.empty()) options.options.emplace_back("quality=" + o.quality, "--quality");
     auto session = std::make_unique<Session>(options);
@@ -189,6 +191,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
     cmd->add_option("--mode", options->mode, "media mode: " + modeNames());
     cmd->add_option("--quality", options->quality, "fast, balanced (default) or exact");
+    cmd->add_option("--scattering", options->scattering, "the optical model instead of the scene's: single or multiple");
     cmd->add_option("--budget-ms", options->budget,
                     "frame budget: walk the quality ladder and keep the lowest-error setting whose frames fit");
     cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));

@@ -20,6 +20,9 @@
 #define MEDIA_VOXEL_EMISSION_UNIT 7    // raymarch: rgb σ_t·emission, a σ_t·g
 #define MEDIA_SLABS_UNIT 0
 #define MEDIA_HOST_DEPTH_UNIT 0       // a standard-Z host depth, re-encoded by media_host_depth
+#define MEDIA_ENVIRONMENT_UNIT 10     // multiple scattering: the environment grid (sampler3D)
+// Uniform blocks (0..2 are gpu/frame_layout.h's, 3 MediaSliceViews above).
+#define MEDIA_SCATTERING_BINDING 4    // multiple scattering: MediaScattering
 // Storage buffers.
 #define MEDIA_PARTICLES_BINDING 3
 #define MEDIA_DRAW_ORDER_BINDING 5

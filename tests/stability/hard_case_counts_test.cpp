@@ -55,7 +55,7 @@ TEST_F(StabilityTest, ZeroParticlesWithinBound) {
 // MediaRenderer::prepare resets the frame's statistics and bounds.
 // Bound: 15% at both times. Measured: 0.1 s particles 1.2%, blocks 1.3%; 0.5 s as at t = 0.
 TEST_F(StabilityTest, ParticlesDyingOutStayFinite) {
-    sandbox::Session session({sceneDirectory() / "zero_particles.gltf", 0.1, {}});
+    sandbox::Session session({.scene = sceneDirectory() / "zero_particles.gltf", .time = 0.1, .scattering = assets::Scattering::Single});
     const HardCase alive{.name = "zero_particles_alive", .scene = "zero_particles.gltf", .time = 0.1};
     const assets::RgbImage aliveReference = renderReference(session, "", alive.width, alive.height);
     for (MediaMode mode : {MediaMode::Particles, MediaMode::Blocks}) {
@@ -167,7 +167,7 @@ TEST_F(StabilityTest, MillionParticlesMemoryIsBounded) {
         for (MediaMode mode : {MediaMode::Particles, MediaMode::Blocks})
             for (int frame = 0; frame < 2; ++frame) (void)renderMode(warmUp, mode, kMillion.width, kMillion.height, "");
     }
-    sandbox::Session session({sceneDirectory() / kMillion.scene, kStep, {}});
+    sandbox::Session session({.scene = sceneDirectory() / kMillion.scene, .time = kStep, .scattering = assets::Scattering::Single});
     for (MediaMode mode : {MediaMode::Particles, MediaMode::Blocks}) {
         const char* name = mediaModeName(mode);
         const auto before = static_cast<double>(settledResidentBytes());

@@ -29,7 +29,7 @@ class RepeatabilityTest : public StabilityTest {
 protected:
     // The largest rel-RMSE between the first frame and each of `frames` − 1 more of the same state.
     static double worstRepeatChange(MediaMode mode, int frames) {
-        sandbox::Session session({sceneDirectory() / "light_directions.gltf", 0.0, {}});
+        sandbox::Session session({.scene = sceneDirectory() / "light_directions.gltf", .scattering = assets::Scattering::Single});
         const assets::RgbImage first = renderMode(session, mode, 96, 54, "antiparallel");
         double worst = 0.0;
         for (int i = 1; i < frames; ++i) {

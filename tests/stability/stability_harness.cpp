@@ -131,7 +131,7 @@ const CaseRun& runCase(gpu::Context& context, const HardCase& c) {
     auto run = std::make_unique<CaseRun>();
 
     const std::filesystem::path scene = c.scene.is_absolute() ? c.scene : sceneDirectory() / c.scene;
-    sandbox::Session session({scene, c.time, c.settings});
+    sandbox::Session session({.scene = scene, .time = c.time, .settings = c.settings, .scattering = assets::Scattering::Single});
     run->reference = renderReference(session, c.camera, c.width, c.height);
     const assets::RgbImage half = renderReference(session, c.camera, c.width, c.height, 0.5 * kReferenceTolerance);
     run->referenceNonfinite = countNonfinite(run->reference);

@@ -5,6 +5,7 @@
 // transmittance, media/optics.
 #include "media/common/mesh_shadow.glsl"
 #include "media/common/lamp_neighbourhood.glsl"
+#include "media/common/multiple_scattering.glsl"
 #include "media/common/own_optical_depth.glsl"
 
 // Seed 001 §III: instead of a lit/unlit test per pixel, compare the occluder depth the shadow map
@@ -56,6 +57,16 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
     if (visibility <= 0.0) return vec3(0.0);
     if (transmittance < 0.0) transmittance = exp(-mediumOpticalDepth(i, p));
     return phase * s.irradiance * (visibility * transmittance);
+}
+
+// The scattering source of the environment at p per unit albedo: unshadowed ambient, or in the
+// multiple model the grid's environment and light scattered more than once.
+vec3 ambientSource(vec3 p, GpuParticle particle) {
+#ifdef MEDIA_MULTIPLE
+    return multipleSource(p);
+#else
+    return frame.ambient.rgb;
+#endif
 }
 
 // ∫₀^τ e^−τl(v) e^−v dv / (1 − e^−τ) for τl linear in v through `entry` at v = 0 and `atShading`
@@ -154,7 +165,7 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
     vec3 p = origin + dir * (c.tClosest + u);
     vec3 entry = origin + dir * (c.tClosest + lo);
     float vBar = shadingDepthFraction(tau) * tau;
-    vec3 scattered = frame.ambient.rgb;
+    vec3 scattered = ambientSource(p, particle);
     int i = 0;
     if (frame.counts.x > 0) do {  // not for: llvmpipe runs a for loop's body once more, masked
 #ifdef SEGMENT_SKIPS_LIGHT  // particle_lighting.comp: lights its fragments evaluate

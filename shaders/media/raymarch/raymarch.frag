@@ -14,6 +14,7 @@
 #include "media/common/slices.glsl"
 #include "media/common/optics.glsl"
 #include "media/common/mesh_shadow.glsl"
+#include "media/common/multiple_scattering.glsl"
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(binding = MEDIA_VOXEL_SCATTERING_UNIT) uniform sampler3D uScattering;  // rgb σ_t·albedo, a σ_t
@@ -51,6 +52,15 @@ vec3 lightAt(vec3 p, vec3 dir, float g) {
     return sum;
 }
 
+// The environment's source at p per unit albedo: unshadowed ambient, or the multiple model's grid.
+vec3 ambientAt(vec3 p) {
+#ifdef MEDIA_MULTIPLE
+    return multipleSource(p);
+#else
+    return frame.ambient.rgb;
+#endif
+}
+
 void main() {
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;
     vec3 origin, dir;
@@ -75,7 +85,7 @@ void main() {
         if (!(a.w > 0.0)) continue;
         vec4 e = texture(uEmission, uvw);
         float g = clamp(e.w / a.w, -0.999, 0.999);
-        vec3 source = (a.rgb * (lightAt(p, dir, g) + frame.ambient.rgb) + e.rgb) / a.w;  // J per unit optical depth
+        vec3 source = (a.rgb * (lightAt(p, dir, g) + ambientAt(p)) + e.rgb) / a.w;  // J per unit optical depth
         float alpha = oneMinusExpNeg(a.w * dt);
         radiance += transmittance * alpha * source;
         transmittance *= 1.0 - alpha;

@@ -23,7 +23,7 @@ namespace nimbus::test {
 // Needs a current GL context. `blocks`, when given, receives the block count the renderer used.
 inline assets::RgbImage renderRealtime(const std::filesystem::path& scene, int width, int height,
                                        const std::vector<std::string>& settings, int* blocks = nullptr) {
-    sandbox::Session session({.scene = scene, .time = 0.0, .settings = settings});
+    sandbox::Session session({.scene = scene, .time = 0.0, .settings = settings, .scattering = assets::Scattering::Single});
     assets::RgbImage image = session.renderRealtime(width, height);
     if (blocks != nullptr) {
         const auto& state = session.app().resource<media::ecs::MediaRendererState>();

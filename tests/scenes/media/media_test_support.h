@@ -34,7 +34,7 @@ inline sandbox::SessionOptions particlesMode(const std::filesystem::path& scene,
                                              std::vector<std::string> settings = {}) {
     std::vector<std::string> all{"mode=particles"};
     all.insert(all.end(), settings.begin(), settings.end());
-    return {scene, time, std::move(all)};
+    return {.scene = scene, .time = time, .settings = std::move(all), .scattering = assets::Scattering::Single};  // the single reference's model
 }
 
 // The reference image of the session's current state (the same camera rule, particles and poses).

@@ -20,7 +20,9 @@ struct RaymarchCase {
 
 void PrintTo(const RaymarchCase& c, std::ostream* os) { *os << c.scene << " at t=" << c.time << " s"; }
 
-sandbox::SessionOptions raymarch(const std::filesystem::path& scene, double time) { return {scene, time, {"mode=raymarch"}}; }
+sandbox::SessionOptions raymarch(const std::filesystem::path& scene, double time) {
+    return {.scene = scene, .time = time, .settings = {"mode=raymarch"}, .scattering = assets::Scattering::Single};
+}
 
 class RaymarchVsReference : public GlSceneTest, public ::testing::WithParamInterface<RaymarchCase> {};
 

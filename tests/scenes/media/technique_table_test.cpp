@@ -55,6 +55,7 @@ nm::TechniqueTable withConstantMode() {
     table.add({.name = "constant",
                .help = "a test mode: the media layer filled with one radiance",
                .lightSlices = false,
+               .multipleScattering = false,
                .settings = specsOf(kConstantFields),
                .read = [](const Settings& settings, QualityTier) -> std::any {
                    return readFields<ConstantSettings>(settings, kConstantFields, {});

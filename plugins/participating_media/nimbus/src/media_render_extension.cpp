@@ -12,6 +12,7 @@ HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows
     frame.lights = render::punctualLights(context.input.lights);
     frame.ambient = context.input.environment.ambient;
     frame.background = context.input.environment.background;
+    frame.scattering = context.input.environment.scattering == assets::Scattering::Single ? ScatteringModel::Single : ScatteringModel::Multiple;
     frame.fog = render::fogParams(context.input.environment.fog, context.view.zfar);
     shadows.texture = 0;
     shadows.size = context.settings.shadowMapSize;

@@ -80,6 +80,20 @@ TEST_F(MediaGpuLayout, SliceViewsMatchGpuSliceViews) {
     }
 }
 
+// The multiple model's block and grid, in each pass family that reads them.
+TEST_F(MediaGpuLayout, ScatteringMatchesGpuScattering) {
+    const gpu::Program lighting = gpu::compileProgram({.compute = "media/particles/particle_lighting.comp", .defines = {"MEDIA_MULTIPLE"}});
+    const gpu::Program raymarch = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/raymarch/raymarch.frag", .defines = {"MEDIA_MULTIPLE"}});
+    for (GLuint program : {lighting.id(), raymarch.id()}) {
+        EXPECT_EQ(gpu::test::resourceOffset(program, GL_UNIFORM, "MediaScattering.gridMin"), static_cast<GLint>(offsetof(GpuScattering, gridMin)));
+        EXPECT_EQ(gpu::test::resourceOffset(program, GL_UNIFORM, "MediaScattering.gridInvExtent"),
+                  static_cast<GLint>(offsetof(GpuScattering, gridInvExtent)));
+        EXPECT_EQ(gpu::test::blockSize(program, GL_UNIFORM_BLOCK, "MediaScattering"), static_cast<GLint>(sizeof(GpuScattering)));
+        EXPECT_EQ(gpu::test::resourceProperty(program, GL_UNIFORM_BLOCK, "MediaScattering", GL_BUFFER_BINDING),
+                  static_cast<GLint>(kScatteringBinding));
+    }
+}
+
 // The texture unit a sampler uniform is bound to in `program` (its layout(binding) value).
 GLint samplerUnit(GLuint program, const char* sampler) {
     const GLint location = glGetUniformLocation(program, sampler);
@@ -108,6 +122,8 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(samplerUnit(raymarch.id(), "uEmission"), static_cast<GLint>(kVoxelEmissionUnit));
     EXPECT_EQ(samplerUnit(raymarch.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
     EXPECT_EQ(samplerUnit(raymarch.id(), "mediaSlices"), static_cast<GLint>(kSlicesUnit));
+    const gpu::Program multiple = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/raymarch/raymarch.frag", .defines = {"MEDIA_MULTIPLE"}});
+    EXPECT_EQ(samplerUnit(multiple.id(), "uEnvironment"), static_cast<GLint>(kEnvironmentUnit));
     const gpu::Program lamps = gpu::compileProgram(LocalLightPrograms::withLocalLights(particlesDesc(true)));
     EXPECT_EQ(storageBinding(lamps.id(), "LampNeighbourhoods"), static_cast<GLint>(kLampNeighbourhoodBinding));
 

@@ -36,10 +36,14 @@ void expectCompiles(const std::vector<gpu::ProgramDesc>& descs) {
     }
 }
 
-// A LocalLightPrograms build: without and with the lamps.
+// A LocalLightPrograms build: without and with the lamps, in the single and the multiple model.
 void addBothLightings(std::vector<gpu::ProgramDesc>& out, const gpu::ProgramDesc& desc) {
-    out.push_back(desc);
-    out.push_back(LocalLightPrograms::withLocalLights(desc));
+    for (bool multiple : {false, true}) {
+        gpu::ProgramDesc model = desc;
+        if (multiple) model.defines.push_back("MEDIA_MULTIPLE");
+        out.push_back(model);
+        out.push_back(LocalLightPrograms::withLocalLights(model));
+    }
 }
 
 TEST_F(ShaderVariants, ExactParticles) {
@@ -61,6 +65,11 @@ TEST_F(ShaderVariants, ParticleSplats) {
         for (bool lamps : {false, true})
             for (bool constant : {false, true}) descs.push_back(particleSplatDesc(eyeInside, lamps, constant));
     expectCompiles(descs);
+}
+
+TEST_F(ShaderVariants, Raymarch) {
+    expectCompiles({{.vertex = "fullscreen.vert", .fragment = "media/raymarch/raymarch.frag"},
+                    {.vertex = "fullscreen.vert", .fragment = "media/raymarch/raymarch.frag", .defines = {"MEDIA_MULTIPLE"}}});
 }
 
 TEST_F(ShaderVariants, BlockComposite) {

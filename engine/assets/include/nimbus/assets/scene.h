@@ -138,7 +138,7 @@ struct Fog {
     double falloff = 0.0;  // 1/m (height): density · e^(−falloff·(y − base))
 };
 
-// Which optical model the medium follows (the root `scattering` field, docs/design.md §2):
+// Which optical model the medium follows (the root `scattering` field, docs/scene-format.md §2):
 // `multiple` is the radiative transfer equation (light scattered any number of times, ambient a
 // uniform environment the medium attenuates and scatters); `single` is light scattered once, with
 // ambient an unshadowed sky every point of the medium scatters.

@@ -27,6 +27,7 @@ TechniqueEntry billboardsTechnique() {
     return {.name = "billboards",
             .help = "the game-industry yardstick: flat, sorted sprites lit per particle, with no volumetric or mesh shadows",
             .lightSlices = false,
+            .multipleScattering = false,
             .read = [](const Settings&, QualityTier) -> std::any { return {}; },
             .create = [] { return std::make_unique<BillboardsTechnique>(); },
             .benchRows = [](const ParticleSet&, const std::vector<glm::dvec3>&) {

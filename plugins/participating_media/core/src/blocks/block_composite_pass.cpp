@@ -77,17 +77,17 @@ BlockCompositePass::Seam BlockCompositePass::addSeamPasses(gpu::FrameGraph& grap
 }
 
 std::vector<BlockCompositePass::Draw> BlockCompositePass::planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam,
-                                                                    const std::vector<Light>& lights) {
+                                                                    const std::vector<Light>& lights, bool multiple) {
     std::vector<Draw> draws;
     for (const Run& run : runs) {
         const auto smooth = static_cast<std::uint8_t>(run.build & ~kBlockExactShading);
         if (!seamOnly || !(run.build & kBlockExactShading)) {
-            draws.push_back({run.ranks, &programs(run.build).forLights(lights), 0});
+            draws.push_back({run.ranks, &programs(run.build).forLights(lights, multiple), 0});
         } else if (seam) {
-            draws.push_back({run.ranks, &programs(smooth).forLights(lights), 1});
-            draws.push_back({run.ranks, &programs(run.build).forLights(lights), 2});
+            draws.push_back({run.ranks, &programs(smooth).forLights(lights, multiple), 1});
+            draws.push_back({run.ranks, &programs(run.build).forLights(lights, multiple), 2});
         } else {  // no block a mesh comes near: no seam
-            draws.push_back({run.ranks, &programs(smooth).forLights(lights), 0});
+            draws.push_back({run.ranks, &programs(smooth).forLights(lights, multiple), 0});
         }
     }
     return draws;
@@ -104,7 +104,7 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
     const std::vector<Run> runs = buildRuns(backToFront, builds);
     const int seamCell = seamMaskCell(target.size);
     const Seam seam = addSeamPasses(graph, context, runs, seamOnly, blocks, made, target, seamCell);
-    const std::vector<Draw> draws = planDraws(runs, seamOnly, seam.mask.valid(), context.host.lights);
+    const std::vector<Draw> draws = planDraws(runs, seamOnly, seam.mask.valid(), context.host.lights, context.multiple);
     const auto& data = graph.addPass<Composite>(
         "media_blocks",
         [&](gpu::PassBuilder& builder, Composite& d) {

@@ -53,7 +53,7 @@ private:
     LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for
     Seam addSeamPasses(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs, bool seamOnly,
                        const BlockGpuBuffers& blocks, const BlockImpostorAtlas& atlas, const MediaTarget& target, int cell);
-    std::vector<Draw> planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam, const std::vector<Light>& lights);
+    std::vector<Draw> planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam, const std::vector<Light>& lights, bool multiple);
 
     std::unique_ptr<LocalLightPrograms> programs_[8];  // by BlockCompositeBuild bits
     std::unique_ptr<BlockSeamMaskPass> seamMask_;        // made when a frame first needs them

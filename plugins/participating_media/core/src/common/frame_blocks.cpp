@@ -12,7 +12,13 @@ FrameBlocks::FrameBlocks()
     : frameBuffer_(gpu::createBuffer(sizeof(gpu::GpuFrame), nullptr, GL_DYNAMIC_STORAGE_BIT)),
       lightsBuffer_(gpu::createBuffer(gpu::kMaxLights * sizeof(gpu::GpuLight), nullptr, GL_DYNAMIC_STORAGE_BIT)),
       shadowViewsBuffer_(gpu::createBuffer(gpu::kMaxLightViews * sizeof(gpu::GpuLightView), nullptr, GL_DYNAMIC_STORAGE_BIT)),
-      sliceViews_(gpu::createBuffer(sizeof(GpuSliceViews), nullptr, GL_DYNAMIC_STORAGE_BIT)) {}
+      sliceViews_(gpu::createBuffer(sizeof(GpuSliceViews), nullptr, GL_DYNAMIC_STORAGE_BIT)),
+      scatteringBuffer_(gpu::createBuffer(sizeof(GpuScattering), nullptr, GL_DYNAMIC_STORAGE_BIT)) {}
+
+void FrameBlocks::packScattering(const GpuScattering& scattering, GLuint environment) {
+    scattering_ = scattering;
+    environment_ = environment;
+}
 
 void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight) {
     if (host.lights.size() > kMaxHostLights)
@@ -48,6 +54,7 @@ void FrameBlocks::upload() const {
     if (!views_.empty())
         glNamedBufferSubData(sliceViews_.id(), offsetof(GpuSliceViews, views), static_cast<GLsizeiptr>(views_.size() * sizeof(gpu::GpuLightView)),
                              views_.data());
+    if (environment_ != 0) glNamedBufferSubData(scatteringBuffer_.id(), 0, sizeof(GpuScattering), &scattering_);
 }
 
 void FrameBlocks::bind() const {
@@ -55,6 +62,9 @@ void FrameBlocks::bind() const {
     glBindBufferBase(GL_UNIFORM_BUFFER, gpu::kLightsBinding, lightsBuffer_.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, gpu::kShadowViewsBinding, shadowViewsBuffer_.id());
     glBindBufferBase(GL_UNIFORM_BUFFER, kSliceViewsBinding, sliceViews_.id());
+    if (environment_ == 0) return;
+    glBindBufferBase(GL_UNIFORM_BUFFER, kScatteringBinding, scatteringBuffer_.id());
+    glBindTextureUnit(kEnvironmentUnit, environment_);
 }
 
 }  // namespace nimbus::media

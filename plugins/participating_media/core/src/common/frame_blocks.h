@@ -14,8 +14,10 @@ public:
     FrameBlocks();
     // Packs now; upload() writes them (when the graph runs, after the host's previous frame).
     void pack(const HostFrame& frame, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight);
+    // The multiple-scattering model's block and environment grid (0: the frame is single scattering).
+    void packScattering(const GpuScattering& scattering, GLuint environment);
     void upload() const;
-    void bind() const;  // Frame, Lights, ShadowViews and MediaSliceViews at their points
+    void bind() const;  // Frame, Lights, ShadowViews, MediaSliceViews (and MediaScattering) at their points
     GLuint sliceViews() const { return sliceViews_.id(); }
 
 private:
@@ -24,7 +26,9 @@ private:
     std::vector<gpu::GpuLightView> shadowViews_;
     std::vector<glm::ivec4> perLight_;
     std::vector<gpu::GpuLightView> views_;
-    gpu::Buffer frameBuffer_, lightsBuffer_, shadowViewsBuffer_, sliceViews_;
+    GpuScattering scattering_{};
+    GLuint environment_ = 0;
+    gpu::Buffer frameBuffer_, lightsBuffer_, shadowViewsBuffer_, sliceViews_, scatteringBuffer_;
 };
 
 }  // namespace nimbus::media

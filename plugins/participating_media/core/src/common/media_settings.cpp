@@ -27,7 +27,7 @@ void setSliceDetail(MediaRenderSettings& s, const SettingValue& v) {
     if (s.sliceTexelsPerRadius > 0.0f) s.sliceTexelsPerRadius = static_cast<float>(v.number);
 }
 
-enum class Acts { Everywhere, LitBySlices, SliceDeposit };
+enum class Acts { Everywhere, LitBySlices, SliceDeposit, MultipleScattering };
 
 struct SharedField {
     SettingField<MediaRenderSettings> field;
@@ -75,6 +75,14 @@ const SharedField kSharedFields[] = {
        .type = SettingType::Number, .min = 1e-4, .max = 10.0, .defaultValue = "0.2"},
       &setNumber<&MediaRenderSettings::upsampleThreshold>},
      Acts::Everywhere},
+    {{{.key = "scattering_voxels", .help = "multiple scattering: voxels of the grid its scattered light diffuses on, along the medium's longest side",
+       .type = SettingType::Integer, .min = 4, .max = 128, .defaultValue = std::to_string(kDefaultScatteringVoxels)},
+      &setInteger<&MediaRenderSettings::scatteringVoxels>},
+     Acts::MultipleScattering},
+    {{{.key = "scattering_sweeps", .help = "multiple scattering: most relaxation sweeps of its diffusion solve per frame (each frame starts from the last)",
+       .type = SettingType::Integer, .min = 1, .max = 1024, .defaultValue = std::to_string(kDefaultScatteringSweeps)},
+      &setInteger<&MediaRenderSettings::scatteringSweeps>},
+     Acts::MultipleScattering},
 };
 
 MediaRenderSettings sharedForTier(QualityTier tier) {
@@ -105,6 +113,8 @@ MediaRenderSettings withDefaults(MediaRenderSettings s) {
     if (s.sliceResolution <= 0) s.sliceResolution = 256;
     if (s.mediaScale <= 0.0f) s.mediaScale = 1.0f;
     if (s.upsampleThreshold <= 0.0f) s.upsampleThreshold = 0.2f;
+    if (s.scatteringVoxels <= 0) s.scatteringVoxels = kDefaultScatteringVoxels;
+    if (s.scatteringSweeps <= 0) s.scatteringSweeps = kDefaultScatteringSweeps;
     return s;
 }
 
@@ -123,7 +133,8 @@ void declareMediaSettings(Settings& settings, const TechniqueTable& techniques) 
     for (const SharedField& shared : kSharedFields) {
         SettingSpec spec = shared.field.spec;
         for (const TechniqueEntry& e : techniques.entries())
-            if ((shared.acts == Acts::LitBySlices && e.lightSlices) || (shared.acts == Acts::SliceDeposit && e.sliceDeposit))
+            if ((shared.acts == Acts::LitBySlices && e.lightSlices) || (shared.acts == Acts::SliceDeposit && e.sliceDeposit) ||
+                (shared.acts == Acts::MultipleScattering && e.multipleScattering))
                 spec.modes.push_back(e.name);
         settings.declare(spec);
     }

@@ -7,10 +7,12 @@
 
 #include <glm/glm.hpp>
 
+#include "common/environment_grid.h"
 #include "common/frame_blocks.h"
 #include "common/media_target.h"
 #include "common/particle_buffer.h"
 #include "nimbus/base/aabb.h"
+#include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/light_views.h"
 
 namespace nimbus::media {
@@ -32,6 +34,8 @@ struct SharedFrame {
     double coverage = 0.0;              // how many times over the billboards cover the image
     std::vector<SliceView> sliceViews;  // every light's, in GraphFrame::sliceViews order
     int sliceResolution = 0;            // texels per side of every slice
+    EnvironmentGrid environment;        // multiple scattering: this frame's (empty: single)
+    gpu::Texture environmentTexture;    // its GPU copy, RGBA32F, linear
 };
 
 }  // namespace nimbus::media

@@ -7,6 +7,8 @@
 #include "common/particle_buffer.h"
 #include "common/shared_frame.h"
 #include "frame/immediate_frame.h"
+#include "nimbus/base/error.h"
+#include "nimbus/media/gpu_bindings.h"
 #include "nimbus/media/slice_plan.h"
 #include "particles/splat_floor.h"
 #include "upsample/media_depth_used_pass.h"
@@ -25,7 +27,10 @@ MediaRenderer::~MediaRenderer() = default;
 
 Aabb MediaRenderer::bounds() const { return shared_->bounds; }
 
-bool MediaRenderer::readsOccluders() const { return technique_ != nullptr && technique_->readsOccluders(); }
+// The multiple-scattering model's environment is dark where a mesh lies.
+bool MediaRenderer::readsOccluders() const {
+    return technique_ != nullptr && (technique_->readsOccluders() || techniques_.at(settings_.mode).multipleScattering);
+}
 
 MediaTechnique& MediaRenderer::technique(const TechniqueEntry& entry) {
     std::unique_ptr<MediaTechnique>& made = made_[entry.name];
@@ -33,17 +38,21 @@ MediaTechnique& MediaRenderer::technique(const TechniqueEntry& entry) {
     return *made;
 }
 
-void MediaRenderer::prepare(const ParticleSet& particles, const MediaRenderSettings& settings) {
+void MediaRenderer::prepare(const ParticleSet& particles, const MediaRenderSettings& settings, const std::vector<Volume>* volumes) {
     const TechniqueEntry& entry = techniques_.at(settings.mode, "media mode");
+    if (volumes != nullptr && !volumes->empty() && !entry.volumes)
+        throw InputError("media mode " + entry.name + " does not draw volumes (a scene with one needs a mode that does)");
     particles_ = &particles;
+    volumes_ = volumes != nullptr ? volumes : &noVolumes_;
     settings_ = withDefaults(settings);
     settings_.mode = entry.name;
     technique_ = &technique(entry);
     shared_->bounds = particleBounds(particles);
+    shared_->bounds.extend(volumeBounds(*volumes_));
     stats_ = {};
     stats_.particles = particles.size();
     stats_.mode = entry.name;
-    frame_ = {&particles, &settings_, shared_.get(), &stats_.technique};
+    frame_ = {&particles, volumes_, &settings_, shared_.get(), &stats_.technique};
 }
 
 // The `media_upload` pass: the plugin's uniform blocks, the particles and what the technique
@@ -55,6 +64,10 @@ void MediaRenderer::addUploadPass(gpu::FrameGraph& graph, GraphFrame& context) {
         [this, &context](const gpu::PassResources&, const Upload&) {
             shared_->blocks->upload();
             shared_->buffer->upload(*particles_, context.host.camera.origin);
+            const EnvironmentGrid& grid = shared_->environment;
+            if (!grid.empty())
+                glTextureSubImage3D(shared_->environmentTexture.id(), 0, 0, 0, 0, grid.size.x, grid.size.y, grid.size.z, GL_RGBA, GL_FLOAT,
+                                    grid.texels.data());
             technique_->upload(frame_, context);
         });
 }
@@ -78,8 +91,9 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
     context.slices = context.color = context.depthUsed = {};
     context.sliceViews.clear();
     context.blocks = nullptr;
+    context.multiple = false;
     stats_.technique.clear();
-    if (particles_ == nullptr || particles_->empty()) return;
+    if (particles_ == nullptr || !hasMedium(*particles_, volumes_)) return;
     SharedFrame& shared = *shared_;
     if (!shared.buffer) shared.buffer = std::make_unique<ParticleGpuBuffer>();
     if (!shared.blocks) shared.blocks = std::make_unique<FrameBlocks>();
@@ -95,6 +109,7 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
         context.sliceViews.push_back(
             gpu::packLightView(v.view, v.firstLayer, static_cast<float>(v.slices), static_cast<float>(shared.sliceResolution)));
     shared.blocks->pack(context.host, context.sliceViews, perLight);
+    planScattering(context);
     stats_.sliceResolution = shared.sliceResolution;
     stats_.sliceViews = static_cast<int>(shared.sliceViews.size());
     technique_->addLightSlices(graph, context, frame_);
@@ -131,6 +146,32 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
     shared.sliceResolution = resolution;
 }
 
+// The multiple model's environment grid, packed with the approximation's constants; a single frame
+// packs none, and its programs read none.
+void MediaRenderer::planScattering(GraphFrame& context) {
+    SharedFrame& shared = *shared_;
+    const bool multiple = context.host.scattering == ScatteringModel::Multiple && techniques_.at(settings_.mode).multipleScattering;
+    context.multiple = multiple;
+    if (!multiple) {
+        shared.environment = {};
+        shared.blocks->packScattering({}, 0);
+        return;
+    }
+    solveEnvironmentGrid(*particles_, *volumes_, {.lights = &context.host.lights, .ambient = context.host.ambient, .meshes = &context.host.occluders},
+                         settings_.scatteringVoxels, {.maxSweeps = settings_.scatteringSweeps}, shared.environment);
+    const EnvironmentGrid& grid = shared.environment;
+    gpu::Texture& texture = shared.environmentTexture;
+    if (!texture || texture.desc().width != grid.size.x || texture.desc().height != grid.size.y || texture.desc().depth != grid.size.z) {
+        texture = gpu::Texture({.target = GL_TEXTURE_3D, .format = GL_RGBA32F, .width = grid.size.x, .height = grid.size.y, .depth = grid.size.z});
+        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(texture.id(), wrap, GL_CLAMP_TO_EDGE);
+    }
+    const glm::dvec3 extent = glm::dvec3(grid.size) * grid.voxel;
+    GpuScattering block;
+    block.gridMin = glm::vec4(glm::vec3(grid.min - context.host.camera.origin), 1.0f);
+    block.gridInvExtent = glm::vec4(glm::vec3(1.0 / extent), 0.0f);
+    shared.blocks->packScattering(block, texture.id());
+}
+
 GLuint MediaRenderer::sliceViewsBlock() const { return shared_->blocks ? shared_->blocks->sliceViews() : 0; }
 
 double MediaRenderer::measureSplatFloor(const gpu::View& view, int repeats) {
@@ -141,7 +182,7 @@ double MediaRenderer::measureSplatFloor(const gpu::View& view, int repeats) {
 
 void MediaRenderer::addMedia(gpu::FrameGraph& graph, GraphFrame& context) {
     context.color = context.depthUsed = {};
-    if (particles_ == nullptr || particles_->empty() || context.blocks == nullptr) return;
+    if (particles_ == nullptr || !hasMedium(*particles_, volumes_) || context.blocks == nullptr) return;
     const gpu::View& v = context.host.camera;
     const MediaTarget& target = shared_->target;
     context.color = technique_->addMedia(graph, context, frame_);

@@ -20,10 +20,10 @@ constexpr std::size_t kSlotsPerParticle = 8, kSlotsPerConstantParticle = 2;  // 
 
 ParticleLightingPass::ParticleLightingPass() = default;
 
-const gpu::Program& ParticleLightingPass::program(const std::vector<Light>& lights, bool exact, bool constant) {
+const gpu::Program& ParticleLightingPass::program(const GraphFrame& context, bool exact, bool constant) {
     std::unique_ptr<LocalLightPrograms>& p = programs_[(exact ? 1 : 0) + (constant ? 2 : 0)];
     if (!p) p = std::make_unique<LocalLightPrograms>(particleLightingDesc(exact, constant));
-    return p->forLights(lights);
+    return p->forLights(context.host.lights, context.multiple);
 }
 
 gpu::ProgramDesc particleLightingDesc(bool exact, bool constant) {
@@ -35,7 +35,7 @@ gpu::ProgramDesc particleLightingDesc(bool exact, bool constant) {
 
 void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
                                std::size_t particles, bool exact, bool constant, const FragmentLamps& lamps) {
-    const gpu::Program& program = this->program(context.host.lights, exact, constant);
+    const gpu::Program& program = this->program(context, exact, constant);
     // Sized from the set: the buffer fills when the upload pass runs.
     const std::size_t bytes = std::max<std::size_t>(particles, 1) * (constant ? kSlotsPerConstantParticle : kSlotsPerParticle) * sizeof(glm::vec4);
     if (!light_ || capacity_ < bytes) {

@@ -38,7 +38,7 @@ public:
     void bind() const;  // the lighting buffer, for the splats
 
 private:
-    const gpu::Program& program(const std::vector<Light>& lights, bool exact, bool constant);
+    const gpu::Program& program(const GraphFrame& context, bool exact, bool constant);
     std::unique_ptr<LocalLightPrograms> programs_[4];  // by exact + 2·constant, built when first asked for
     gpu::Buffer light_;
     std::size_t capacity_ = 0;

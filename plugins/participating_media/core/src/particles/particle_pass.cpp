@@ -25,7 +25,7 @@ gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& contex
     const int w = target.size.x, h = target.size.y;
     if (!shading.layerLight && !pointLight_)
         pointLight_ = std::make_unique<LocalLightPrograms>(particlesDesc(false));
-    const gpu::Program& program = (shading.layerLight ? layerLight_ : *pointLight_).forLights(context.host.lights);
+    const gpu::Program& program = (shading.layerLight ? layerLight_ : *pointLight_).forLights(context.host.lights, context.multiple);
     const auto& data = graph.addPass<Data>(
         "media_particles",
         [&](gpu::PassBuilder& builder, Data& d) {

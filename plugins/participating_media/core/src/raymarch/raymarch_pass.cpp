@@ -31,6 +31,8 @@ gpu::ResourceHandle RaymarchPass::add(gpu::FrameGraph& graph, GraphFrame& contex
                                       const MediaTarget& target) {
     struct Data : LitMediaInputs {};
     upload(grid);
+    if (context.multiple && !multiple_) multiple_ = std::make_unique<gpu::FullscreenPass>("media/raymarch/raymarch.frag", std::vector<std::string>{"MEDIA_MULTIPLE"});
+    const gpu::FullscreenPass& pass = context.multiple ? *multiple_ : pass_;
     const int w = target.size.x, h = target.size.y;
     // The grid relative to the frame origin, in float: the camera is near it, so it stays exact.
     const glm::vec3 corner(grid.min - context.host.camera.origin);
@@ -40,11 +42,11 @@ gpu::ResourceHandle RaymarchPass::add(gpu::FrameGraph& graph, GraphFrame& contex
         [&](gpu::PassBuilder& builder, Data& d) {
             declareLitMediaInputs(builder, context, target, d);
         },
-        [this, &context, w, h, corner, extent, maxSteps, voxel = static_cast<float>(grid.voxel.x), rayleigh = grid.rayleigh,
+        [this, &pass, &context, w, h, corner, extent, maxSteps, voxel = static_cast<float>(grid.voxel.x), rayleigh = grid.rayleigh,
          scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
             // Every texel is written once, unblended: (in-scattered radiance, transmittance).
             const gpu::Framebuffer fbo = gpu::singleTargetFramebuffer(resources.id(d.media), GL_RGBA32F);
-            const GLuint program = pass_.program();
+            const GLuint program = pass.program();
             context.blocks->bind();
             bindLitMediaInputs(resources, d);
             glBindTextureUnit(kVoxelScatteringUnit, scattering_.id());
@@ -55,7 +57,7 @@ gpu::ResourceHandle RaymarchPass::add(gpu::FrameGraph& graph, GraphFrame& contex
             glProgramUniform1f(program, 4, voxel);
             glProgramUniform1i(program, 5, std::max(maxSteps, 1));
             glProgramUniform1i(program, 6, rayleigh ? 1 : 0);
-            pass_.draw(fbo.id(), {w, h});
+            pass.draw(fbo.id(), {w, h});
         });
     return data.media;
 }

@@ -2,6 +2,8 @@
 // The `raymarch` pass (seed 002; shaders/media/raymarch/raymarch.*): the voxel grid marched per
 // pixel of the media target from a jittered start, up to the scene depth, until the view
 // transmittance is spent. Light comes from the light slices and the mesh shadow maps.
+#include <memory>
+
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/fullscreen_pass.h"
@@ -23,6 +25,7 @@ private:
     void upload(const VoxelGrid& grid);
 
     gpu::FullscreenPass pass_;
+    std::unique_ptr<gpu::FullscreenPass> multiple_;  // MEDIA_MULTIPLE, made when a frame first needs it
     gpu::Texture scattering_, emission_;
 };
 

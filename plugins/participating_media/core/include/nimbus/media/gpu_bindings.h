@@ -33,6 +33,10 @@ inline constexpr GLuint kSliceImpostorMomentsUnit = 6;  // MEDIA_SLICE_IMPOSTOR_
 inline constexpr GLuint kSeamMaskUnit = 9;        // MEDIA_SEAM_MASK_UNIT
 inline constexpr GLuint kVoxelScatteringUnit = 5; // MEDIA_VOXEL_SCATTERING_UNIT (raymarch: never with the impostors)
 inline constexpr GLuint kVoxelEmissionUnit = 7;   // MEDIA_VOXEL_EMISSION_UNIT
+inline constexpr GLuint kEnvironmentUnit = 10;    // MEDIA_ENVIRONMENT_UNIT (multiple scattering)
+
+// Uniform blocks (0..2 are gpu/frame_layout.h's).
+inline constexpr GLuint kScatteringBinding = 4;   // MEDIA_SCATTERING_BINDING (multiple scattering)
 
 // Storage buffers.
 inline constexpr GLuint kParticlesBinding = 3;           // MEDIA_PARTICLES_BINDING
@@ -50,6 +54,12 @@ struct alignas(16) GpuSliceViews {
     glm::ivec4 count;                           // x: slice views this frame
     glm::ivec4 perLight[kMaxHostLights];        // x: first view (−1: none), y: view count
     gpu::GpuLightView views[gpu::kMaxLightViews];
+};
+
+// The MediaScattering uniform block (shaders/media/common/multiple_scattering.glsl).
+struct alignas(16) GpuScattering {
+    glm::vec4 gridMin{0.0f};        // xyz origin-relative corner of the environment grid
+    glm::vec4 gridInvExtent{0.0f};  // xyz 1 / its extent
 };
 
 }  // namespace nimbus::media

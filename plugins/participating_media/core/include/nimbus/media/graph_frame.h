@@ -26,6 +26,7 @@ struct GraphFrame {
     gpu::ResourceHandle depthUsed;       // addMedia: MediaLayer::depthUsed (invalid at full resolution)
     float edgeThreshold = 0.2f;          // addMedia: MediaLayer::edgeThreshold
     std::vector<gpu::GpuLightView> sliceViews;  // addLightSlices: every light's slice views
+    bool multiple = false;                      // addLightSlices: the frame draws the multiple-scattering model
     const FrameBlocks* blocks = nullptr;        // the plugin's uniform blocks for this frame
 };
 

@@ -61,6 +61,11 @@ struct OccluderBox {
 };
 OccluderBox occluderBox(const glm::dmat4& world, const glm::dvec3& localMin, const glm::dvec3& localMax);
 
+// The optical model the medium follows (the scene's `scattering`, docs/scene-format.md §2): multiple
+// scattering (the plugin's approximation of light scattered any number of times, ambient an
+// environment the medium attenuates), or single scattering (ambient unshadowed).
+enum class ScatteringModel : std::uint8_t { Multiple, Single };
+
 enum class DepthConvention : std::uint8_t {
     ReversedZ,  // Nimbus's: window depth 1 at the near plane, 0 at the far plane or infinity
     Standard,   // OpenGL's usual: 0 at the near plane, 1 at the far plane (or infinity)
@@ -71,6 +76,7 @@ struct HostFrame {
     std::vector<Light> lights;  // at most kMaxHostLights; indices match the host's mesh shader
     glm::vec3 ambient{0.0f};    // L_amb, radiance every particle scatters (DESIGN.md §2)
     glm::vec3 background{0.0f}; // what rays that hit nothing see
+    ScatteringModel scattering = ScatteringModel::Multiple;
     // The scene's distance fog (scene-format.md §2.1): the plugin fogs each particle at its
     // distance; the host fogs its own meshes and background (shaders/common/fog.glsl does both).
     gpu::FogParams fog;
@@ -79,8 +85,9 @@ struct HostFrame {
     // (`media_host_depth`) that re-encodes it as the plugin reads depth.
     DepthConvention depthConvention = DepthConvention::ReversedZ;
     const HostShadowMaps* shadows = nullptr;
-    // World boxes of the host's meshes: `blocks` mode shades the blocks they reach exactly. Empty:
-    // blocks mode treats the medium as free of meshes (a seam may show where one is seen inside).
+    // World boxes of the host's meshes: `blocks` mode shades the blocks they reach exactly, and the
+    // multiple-scattering model's environment is dark where one lies. Empty: the medium is taken
+    // as free of meshes (blocks: a seam may show where one is seen inside).
     std::vector<OccluderBox> occluders;
 };
 

@@ -25,6 +25,7 @@
 #include "nimbus/media/medium_footprint.h"
 #include "nimbus/media/particle_set.h"
 #include "nimbus/media/technique.h"
+#include "nimbus/media/volume.h"
 
 namespace nimbus::media {
 
@@ -55,9 +56,10 @@ public:
 
     const TechniqueTable& techniques() const { return techniques_; }
 
-    // The medium to draw this frame. Keeps a reference: `particles` must outlive the frame.
-    // InputError when settings.mode names no technique of the table.
-    void prepare(const ParticleSet& particles, const MediaRenderSettings& settings);
+    // The medium to draw this frame. Keeps a reference: `particles` and `volumes` must outlive the
+    // frame. InputError when settings.mode names no technique of the table, or one that does not
+    // draw volumes while there are some.
+    void prepare(const ParticleSet& particles, const MediaRenderSettings& settings, const std::vector<Volume>* volumes = nullptr);
     // World bounds of the particles: a host's shadow maps must cover them too.
     Aabb bounds() const;
     // Whether this frame's technique reads HostFrame::occluders; a host may skip them otherwise.
@@ -84,12 +86,15 @@ private:
     void planTarget(const GraphFrame& frame);
     void addUploadPass(gpu::FrameGraph& graph, GraphFrame& frame);
     void planSliceViews(const GraphFrame& frame, std::vector<glm::ivec2>& perLight);
+    void planScattering(GraphFrame& frame);  // the multiple-scattering model's environment grid
     MediaTechnique& technique(const TechniqueEntry& entry);  // made when first used
 
     TechniqueTable techniques_;
     std::map<std::string, std::unique_ptr<MediaTechnique>> made_;
     MediaTechnique* technique_ = nullptr;  // this frame's
     const ParticleSet* particles_ = nullptr;
+    const std::vector<Volume>* volumes_ = nullptr;
+    std::vector<Volume> noVolumes_;
     MediaRenderSettings settings_;
     std::unique_ptr<SharedFrame> shared_;
     TechniqueFrame frame_;

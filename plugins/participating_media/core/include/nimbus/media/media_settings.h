@@ -31,12 +31,20 @@ struct MediaRenderSettings {
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     bool mediaScaleAuto = false;  // automaticMediaScale (media_renderer.h)
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2
+    // The multiple-scattering model's grid (common/environment_grid.h), for frames of the multiple
+    // model; zero: the defaults below.
+    int scatteringVoxels = 0;  // voxels along the medium's longest side
+    int scatteringSweeps = 0;  // most sweeps of the diffusion solve per frame
     // The technique's own settings (TechniqueEntry::read gives them); empty: its defaults.
     std::any technique;
 };
 
+inline constexpr int kDefaultScatteringVoxels = 32;
+inline constexpr int kDefaultScatteringSweeps = 64;
+
 // The settings with each zero field that stands for a value given it (sliceResolution 256,
-// mediaScale 1, upsampleThreshold 0.2); where zero means "choose" (slices) it stays.
+// mediaScale 1, upsampleThreshold 0.2, the scattering defaults); where zero means "choose"
+// (slices) it stays.
 // MediaRenderer::prepare applies it, so a host may pass {} or only what it sets.
 MediaRenderSettings withDefaults(MediaRenderSettings settings);
 

@@ -10,6 +10,7 @@
 #include "nimbus/gpu/view.h"
 #include "nimbus/media/host.h"
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/volume.h"
 
 namespace nimbus::media {
 
@@ -46,5 +47,10 @@ bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view);
 
 // World bounds of the particle spheres.
 Aabb particleBounds(const ParticleSet& particles);
+
+// Whether anything of the medium is there to draw: particles or volumes.
+inline bool hasMedium(const ParticleSet& particles, const std::vector<Volume>* volumes) {
+    return !particles.empty() || (volumes != nullptr && !volumes->empty());
+}
 
 }  // namespace nimbus::media

@@ -28,6 +28,7 @@
 #include "nimbus/media/graph_frame.h"
 #include "nimbus/media/media_settings.h"
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/volume.h"
 
 namespace nimbus::media {
 
@@ -42,6 +43,7 @@ struct TechniqueStat {
 // The frame as a technique's calls see it.
 struct TechniqueFrame {
     const ParticleSet* particles = nullptr;
+    const std::vector<Volume>* volumes = nullptr;  // never null while a frame is drawn
     const MediaRenderSettings* settings = nullptr;
     SharedFrame* shared = nullptr;
     std::vector<TechniqueStat>* stats = nullptr;  // cleared each frame; the technique appends
@@ -70,6 +72,8 @@ struct TechniqueEntry {
     std::string help;  // what the mode is, in one line
     bool lightSlices = true;    // lit by the shared light slice views (the slice keys act in it)
     bool sliceDeposit = false;  // its slices honour slice_deposit
+    bool multipleScattering = true;  // draws the multiple-scattering model (the scattering keys act in it)
+    bool volumes = false;            // draws volumes (volume.h); the other modes refuse a scene with one
     std::vector<SettingSpec> settings;  // its own keys (the table sets their `modes` to this name)
     // Its typed settings for `tier` with every one of its keys that was set applied.
     std::function<std::any(const Settings&, QualityTier)> read;

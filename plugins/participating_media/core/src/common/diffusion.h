@@ -1,0 +1,52 @@
+#pragma once
+// Light scattered two or more times, as a diffusion process (Stam, "Multiple scattering as a
+// diffusion process"): on a coarse grid over the medium, the fluence φ of the light the first
+// scattering releases obeys −∇·(D∇φ) + σ_a φ = Q, with D = 1 / (3 σ_t (1 − ω g)) and Q the first
+// scattering's source (σ_s times the light that arrives unscattered). The radiance it adds to the
+// medium's source is φ / 4π per unit albedo, the same in every direction.
+//
+// Discretised by finite volumes (harmonic-mean diffusivity across faces); where the medium meets
+// empty voxels the fluence falls to zero at the extrapolated boundary 2D past the face (Marshak's
+// condition). Solved by red-black successive over-relaxation from a given start (environment_grid.h
+// starts it from a coarser grid's answer).
+//
+// Does not: keep the scattered light's direction (forward peaks of later orders are lost, which the
+// single-scattering term carries for order 1), or resolve anything finer than a voxel.
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace nimbus::media {
+
+// The medium sampled at voxel centres, x fastest.
+struct MediumGrid {
+    glm::ivec3 size{0};
+    glm::dvec3 min{0.0};   // world position of voxel 0's outer corner
+    double voxel = 0.0;    // side, the same along every axis
+    std::vector<float> sigma;              // σ_t, 1/m
+    std::vector<glm::vec3> scattering;     // σ_s = σ_t · albedo
+    std::vector<float> sigmaG;             // σ_t · g, for the mean asymmetry
+    std::vector<glm::vec3> emission;       // σ_t · emitted radiance per unit optical depth
+
+    std::size_t count() const { return sigma.size(); }
+    std::size_t index(int x, int y, int z) const {
+        return (static_cast<std::size_t>(z) * static_cast<std::size_t>(size.y) + static_cast<std::size_t>(y)) *
+                   static_cast<std::size_t>(size.x) + static_cast<std::size_t>(x);
+    }
+};
+
+struct EnvironmentGrid;
+
+struct DiffusionSolve {
+    int maxSweeps = 64;           // red-black sweep pairs at most
+    float tolerance = 1e-5f;      // stop when no voxel's fluence moves by more than this × the largest
+    const EnvironmentGrid* coarser = nullptr;  // environment_grid.h: a solve to start from, when there is no last frame's
+};
+
+// φ per voxel for first-scattering source `source` (W/m³ per channel, Q above), starting from
+// `fluence` when it has the grid's size, else from zero. Returns the sweeps run.
+int solveDiffusion(const MediumGrid& medium, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& fluence,
+                   const DiffusionSolve& solve = {});
+
+}  // namespace nimbus::media

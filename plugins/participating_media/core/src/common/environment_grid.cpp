@@ -1,0 +1,355 @@
+#include "common/environment_grid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "nimbus/media/optics.h"
+
+namespace nimbus::media {
+namespace {
+
+// ∫ σ ρ dV of one particle over its sphere: 4π σ ∫₀^R r² e^{−k r²} dr, k = 4.5/R².
+double opticalVolume(double sigma, double radius) {
+    const double k = kKernelFalloff / (radius * radius), sk = std::sqrt(k);
+    return sigma * (std::pow(kPi / k, 1.5) * std::erf(sk * radius) - 2.0 * kPi * radius / k * std::exp(-k * radius * radius));
+}
+
+void splatParticle(const ParticleSet& p, std::size_t i, MediumGrid& m) {
+    const double radius = p.radius[i];
+    if (!(radius > 0.0) || !(p.sigma[i] > 0.0f)) return;
+    const glm::dvec3 local = (p.position[i] - m.min) / m.voxel - 0.5;  // in voxel-centre units
+    const double reach = radius / m.voxel;
+    const glm::ivec3 lo = glm::max(glm::ivec3(glm::ceil(local - reach)), glm::ivec3(0));
+    const glm::ivec3 hi = glm::min(glm::ivec3(glm::floor(local + reach)), m.size - 1);
+    const double target = opticalVolume(p.sigma[i], radius) / (m.voxel * m.voxel * m.voxel);  // the sum over voxels it should make
+    const double invR2 = 1.0 / (radius * radius);
+    auto weight = [&](int x, int y, int z) {
+        const glm::dvec3 d = (glm::dvec3(x, y, z) - local) * m.voxel;
+        const double r2 = glm::dot(d, d) * invR2;
+        return r2 < 1.0 ? std::exp(-kKernelFalloff * r2) : 0.0;
+    };
+    auto add = [&](std::size_t v, double sigma) {
+        m.sigma[v] += static_cast<float>(sigma);
+        m.scattering[v] += static_cast<float>(sigma) * p.albedo[i];
+        m.sigmaG[v] += static_cast<float>(sigma) * p.g[i];
+        m.emission[v] += static_cast<float>(sigma) * p.emission[i];
+    };
+    double sum = 0.0;
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) sum += weight(x, y, z);
+    if (!(sum > 0.0)) {  // smaller than a voxel: all of it on the nearest centre
+        const glm::ivec3 c = glm::clamp(glm::ivec3(glm::round(local)), glm::ivec3(0), m.size - 1);
+        add(m.index(c.x, c.y, c.z), target);
+        return;
+    }
+    const double scale = target / sum;
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) add(m.index(x, y, z), scale * weight(x, y, z));
+}
+
+// Optical depth from every voxel centre to the grid's edge along step s (a lattice direction),
+// trapezoid rule along the lattice line; the lines are swept from the edge they leave by.
+std::vector<float> sweep(const MediumGrid& m, const glm::ivec3& s) {
+    const std::vector<float>& sigma = m.sigma;
+    const glm::ivec3& size = m.size;
+    const double voxel = m.voxel;
+    std::vector<float> tau(sigma.size(), 0.0f);
+    const double step = voxel * glm::length(glm::dvec3(s));
+    auto order = [](int n, int d) { return d > 0 ? std::pair{n - 1, -1} : std::pair{0, 1}; };  // visit the far end first
+    const auto [x0, dx] = order(size.x, s.x);
+    const auto [y0, dy] = order(size.y, s.y);
+    const auto [z0, dz] = order(size.z, s.z);
+    for (int iz = 0, z = z0; iz < size.z; ++iz, z += dz)
+        for (int iy = 0, y = y0; iy < size.y; ++iy, y += dy)
+            for (int ix = 0, x = x0; ix < size.x; ++ix, x += dx) {
+                const glm::ivec3 next(x + s.x, y + s.y, z + s.z);
+                const std::size_t v = m.index(x, y, z);
+                const bool inside = glm::all(glm::greaterThanEqual(next, glm::ivec3(0))) && glm::all(glm::lessThan(next, size));
+                if (!inside) {
+                    tau[v] = static_cast<float>(0.5 * sigma[v] * step);
+                    continue;
+                }
+                const std::size_t n = m.index(next.x, next.y, next.z);
+                tau[v] = tau[n] + static_cast<float>(0.5 * (sigma[v] + sigma[n]) * step);
+            }
+    return tau;
+}
+
+// Whether the ray from p along d (unit) meets a mesh box before `reach` (a slab test in the box's frame).
+bool meetsMesh(const glm::dvec3& p, const glm::dvec3& d, const std::vector<OccluderBox>& meshes,
+               double reach = std::numeric_limits<double>::infinity()) {
+    for (const OccluderBox& box : meshes) {
+        double lo = 0.0, hi = reach;
+        bool miss = false;
+        for (int a = 0; a < 3 && !miss; ++a) {
+            const double o = glm::dot(p - box.centre, box.axis[a]), v = glm::dot(d, box.axis[a]);
+            if (std::abs(v) < 1e-12) {
+                miss = std::abs(o) > box.half[a];
+                continue;
+            }
+            double t0 = (-box.half[a] - o) / v, t1 = (box.half[a] - o) / v;
+            if (t0 > t1) std::swap(t0, t1);
+            lo = std::max(lo, t0);
+            hi = std::min(hi, t1);
+            miss = lo > hi;
+        }
+        if (!miss) return true;
+    }
+    return false;
+}
+
+// The trilinear blend at u (in voxel-centre units) of fetch(voxel index) over a grid of `size`,
+// each corner outside it taken as `outside` (or, with clampToEdge, as the nearest voxel).
+template <typename T, typename Fetch>
+T trilinear(const glm::ivec3& size, const glm::dvec3& u, Fetch fetch, bool clampToEdge) {
+    const glm::ivec3 i0 = glm::ivec3(glm::floor(u));
+    const glm::vec3 f = glm::vec3(u - glm::floor(u));
+    T sum{0.0f};
+    for (int c = 0; c < 8; ++c) {
+        glm::ivec3 q = i0 + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+        if (clampToEdge) q = glm::clamp(q, glm::ivec3(0), size - 1);
+        else if (glm::any(glm::lessThan(q, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(q, size))) continue;
+        const float w = (c & 1 ? f.x : 1.0f - f.x) * (c & 2 ? f.y : 1.0f - f.y) * (c & 4 ? f.z : 1.0f - f.z);
+        sum += w * fetch((static_cast<std::size_t>(q.z) * static_cast<std::size_t>(size.y) + static_cast<std::size_t>(q.y)) *
+                             static_cast<std::size_t>(size.x) + static_cast<std::size_t>(q.x));
+    }
+    return sum;
+}
+
+// σ_t at a world point: trilinear between voxel centres, zero outside the grid.
+float sigmaAt(const MediumGrid& m, const glm::dvec3& world) {
+    return trilinear<float>(m.size, (world - m.min) / m.voxel - 0.5, [&](std::size_t v) { return m.sigma[v]; }, false);
+}
+
+// Optical depth from p along unit d for `reach` or until the grid ends, by the midpoint rule at
+// half-voxel steps.
+double depthAlong(const MediumGrid& m, const glm::dvec3& p, const glm::dvec3& d, double reach) {
+    const glm::dvec3 lo = m.min, hi = m.min + glm::dvec3(m.size) * m.voxel;
+    double exit = reach;
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(d[a]) > 1e-12) exit = std::min(exit, ((d[a] > 0.0 ? hi[a] : lo[a]) - p[a]) / d[a]);
+    const double step = 0.5 * m.voxel;
+    double tau = 0.0;
+    for (double t = 0.5 * step; t < exit; t += step) tau += sigmaAt(m, p + d * t) * std::min(step, exit - t + 0.5 * step);
+    return tau;
+}
+
+// E at p from one light, with the direction towards it and its distance (assets/light_model.h's
+// formulas, which the core cannot include).
+struct Arrival {
+    glm::dvec3 toLight{0.0};
+    double distance = 0.0;
+    glm::vec3 irradiance{0.0f};
+};
+Arrival arrival(const Light& light, const glm::dvec3& p) {
+    Arrival a;
+    if (light.kind == gpu::LightKind::Directional) {
+        a.toLight = -light.direction;
+        a.distance = std::numeric_limits<double>::infinity();
+        a.irradiance = light.radiance;
+        return a;
+    }
+    const glm::dvec3 d = light.position - p;
+    a.distance = glm::length(d);
+    if (!(a.distance > 1e-9)) return a;
+    a.toLight = d / a.distance;
+    double scale = 1.0 / (a.distance * a.distance);
+    if (light.range > 0.0) scale *= std::pow(std::clamp(1.0 - std::pow(a.distance / light.range, 4.0), 0.0, 1.0), 2.0);
+    if (light.kind == gpu::LightKind::Spot) {
+        const double cosOuter = std::cos(light.outerConeAngle);
+        const double k = 1.0 / std::max(0.001, std::cos(light.innerConeAngle) - cosOuter);
+        const double c = std::clamp(glm::dot(-a.toLight, light.direction) * k - cosOuter * k, 0.0, 1.0);
+        scale *= c * c;
+    }
+    a.irradiance = light.radiance * static_cast<float>(scale);
+    return a;
+}
+
+// Per voxel, the mean transmittance to the outside over the 14 lattice directions, mesh boxes dark.
+std::vector<float> environmentTransmittance(const MediumGrid& m, const std::vector<OccluderBox>& meshes) {
+    std::vector<float> mean(m.count(), 0.0f);
+    for (int z = -1; z <= 1; ++z)
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x) {
+                if (!(std::abs(x) + std::abs(y) + std::abs(z) == 1 || (x != 0 && y != 0 && z != 0))) continue;
+                const glm::ivec3 s(x, y, z);
+                const std::vector<float> tau = sweep(m, s);
+                const glm::dvec3 d = glm::normalize(glm::dvec3(s));
+                for (int k = 0; k < m.size.z; ++k)
+                    for (int j = 0; j < m.size.y; ++j)
+                        for (int i = 0; i < m.size.x; ++i) {
+                            const std::size_t v = m.index(i, j, k);
+                            if (!meshes.empty() && meetsMesh(m.min + (glm::dvec3(i, j, k) + 0.5) * m.voxel, d, meshes)) continue;
+                            mean[v] += std::exp(-tau[v]) / 14.0f;
+                        }
+            }
+    return mean;
+}
+
+// Q per voxel: σ_s times the light that arrives unscattered, from the lights and the environment
+// (4π L_amb times the mean transmittance), and the medium's own emission (fire), which the passes
+// draw unscattered and this scatters.
+std::vector<glm::vec3> firstScattering(const MediumGrid& m, const EnvironmentLighting& lighting, const std::vector<float>& environment) {
+    std::vector<glm::vec3> source(m.count(), glm::vec3(0.0f));
+    static const std::vector<OccluderBox> kNoMeshes;
+    const std::vector<OccluderBox>& meshes = lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes;
+    for (int z = 0; z < m.size.z; ++z)
+        for (int y = 0; y < m.size.y; ++y)
+            for (int x = 0; x < m.size.x; ++x) {
+                const std::size_t v = m.index(x, y, z);
+                if (!(m.sigma[v] > 0.0f)) continue;
+                const glm::dvec3 p = m.min + (glm::dvec3(x, y, z) + 0.5) * m.voxel;
+                // The light's mean over the voxel rather than at its centre (a dense voxel's lit face
+                // scatters most): e^{−τ_c} · 2 sinh(τ_v/2) / τ_v for optical depth τ_v across it.
+                const double half = 0.5 * m.sigma[v] * m.voxel;
+                const double acrossVoxel = half > 1e-4 ? std::sinh(std::min(half, 30.0)) / half : 1.0;
+                glm::vec3 arriving = lighting.ambient * (4.0f * static_cast<float>(kPi) * environment[v]);
+                if (lighting.lights != nullptr)
+                    for (const Light& light : *lighting.lights) {
+                        const Arrival a = arrival(light, p);
+                        if (!(a.irradiance.x + a.irradiance.y + a.irradiance.z > 0.0f)) continue;
+                        if (!meshes.empty() && meetsMesh(p, a.toLight, meshes, a.distance)) continue;
+                        arriving += a.irradiance * static_cast<float>(std::exp(-depthAlong(m, p, a.toLight, a.distance)) * acrossVoxel);
+                    }
+                source[v] = m.scattering[v] * arriving + 4.0f * static_cast<float>(kPi) * m.emission[v];  // emission: all directions
+            }
+    return source;
+}
+
+// φ with each voxel that holds no medium given the mean of its neighbours that do: the passes
+// read the grid trilinearly, and a particle at the medium's surface should see the surface's
+// scattered light rather than a ramp to the empty voxel's zero.
+std::vector<glm::vec3> dilated(const MediumGrid& m, const std::vector<glm::vec3>& phi) {
+    std::vector<glm::vec3> out = phi;
+    for (int z = 0; z < m.size.z; ++z)
+        for (int y = 0; y < m.size.y; ++y)
+            for (int x = 0; x < m.size.x; ++x) {
+                const std::size_t v = m.index(x, y, z);
+                if (phi[v] != glm::vec3(0.0f)) continue;
+                glm::vec3 sum(0.0f);
+                int count = 0;
+                for (int c = 0; c < 27; ++c) {
+                    const glm::ivec3 q = glm::ivec3(x, y, z) + glm::ivec3(c % 3 - 1, (c / 3) % 3 - 1, c / 9 - 1);
+                    if (glm::any(glm::lessThan(q, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(q, m.size))) continue;
+                    const glm::vec3& n = phi[m.index(q.x, q.y, q.z)];
+                    if (n == glm::vec3(0.0f)) continue;
+                    sum += n;
+                    ++count;
+                }
+                if (count > 0) out[v] = sum / static_cast<float>(count);
+            }
+    return out;
+}
+
+// `coarse`'s fluence at `fine`'s voxel centres, trilinear: where a solve on the finer grid starts.
+std::vector<glm::vec3> resampled(const EnvironmentGrid& coarse, const MediumGrid& fine) {
+    std::vector<glm::vec3> out(fine.count(), glm::vec3(0.0f));
+    if (coarse.fluence.empty()) return out;
+    for (int z = 0; z < fine.size.z; ++z)
+        for (int y = 0; y < fine.size.y; ++y)
+            for (int x = 0; x < fine.size.x; ++x) {
+                const glm::dvec3 u = (fine.min + (glm::dvec3(x, y, z) + 0.5) * fine.voxel - coarse.min) / coarse.voxel.x - 0.5;
+                out[fine.index(x, y, z)] = trilinear<glm::vec3>(coarse.size, u, [&](std::size_t v) { return coarse.fluence[v]; }, true);
+            }
+    return out;
+}
+
+// Every number of the lighting the grid depends on, to tell whether a frame's is the last one's.
+std::vector<double> lightingKey(const EnvironmentLighting& lighting) {
+    std::vector<double> key{lighting.ambient.x, lighting.ambient.y, lighting.ambient.z};
+    if (lighting.lights != nullptr)
+        for (const Light& l : *lighting.lights)
+            key.insert(key.end(), {static_cast<double>(l.kind), l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
+                                   l.direction.z, l.radiance.x, l.radiance.y, l.radiance.z, l.range, l.innerConeAngle, l.outerConeAngle});
+    if (lighting.meshes != nullptr)
+        for (const OccluderBox& b : *lighting.meshes) {
+            key.insert(key.end(), {b.centre.x, b.centre.y, b.centre.z, b.half.x, b.half.y, b.half.z});
+            for (const glm::dvec3& a : b.axis) key.insert(key.end(), {a.x, a.y, a.z});
+        }
+    return key;
+}
+
+}  // namespace
+
+void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting,
+                          int voxelsAlongLongest, DiffusionSolve solve, EnvironmentGrid& grid) {
+    const MediumGrid medium = voxelizeMedium(particles, volumes, voxelsAlongLongest);
+    std::vector<double> key = lightingKey(lighting);
+    // The same medium and light as the last frame: the same answer, without solving again.
+    if (!grid.texels.empty() && grid.size == medium.size && grid.min == medium.min && grid.lighting == key && grid.sigma == medium.sigma &&
+        grid.sigmaG == medium.sigmaG && grid.scattering == medium.scattering && grid.emission == medium.emission) {
+        grid.sweeps = 0;
+        return;
+    }
+    EnvironmentGrid coarse;
+    if (voxelsAlongLongest >= 8) {
+        // The diffusion's long wavelengths converge on a coarser grid first. Never from the last
+        // frame's answer: a frame's picture depends on that frame alone.
+        solveEnvironmentGrid(particles, volumes, lighting, voxelsAlongLongest / 2, solve, coarse);
+        solve.coarser = &coarse;
+    }
+    buildEnvironmentGrid(medium, lighting, solve, grid);
+    grid.lighting = std::move(key);
+    grid.sigma = medium.sigma;
+    grid.sigmaG = medium.sigmaG;
+    grid.scattering = medium.scattering;
+    grid.emission = medium.emission;
+}
+
+MediumGrid voxelizeMedium(const ParticleSet& particles, const std::vector<Volume>& volumes, int voxelsAlongLongest) {
+    MediumGrid m;
+    Aabb bounds = volumeBounds(volumes);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        bounds.extend(particles.position[i] - glm::dvec3(particles.radius[i]));
+        bounds.extend(particles.position[i] + glm::dvec3(particles.radius[i]));
+    }
+    if (bounds.empty()) return m;
+    const glm::dvec3 extent = bounds.max - bounds.min;
+    m.voxel = std::max({extent.x, extent.y, extent.z, 1e-6}) / std::max(voxelsAlongLongest, 1);
+    m.min = bounds.min - m.voxel;  // a voxel of padding: outside the medium everything is lit
+    m.size = glm::ivec3(glm::ceil(extent / m.voxel)) + 2;
+    const std::size_t n = static_cast<std::size_t>(m.size.x) * static_cast<std::size_t>(m.size.y) * static_cast<std::size_t>(m.size.z);
+    m.sigma.assign(n, 0.0f);
+    m.scattering.assign(n, glm::vec3(0.0f));
+    m.sigmaG.assign(n, 0.0f);
+    m.emission.assign(n, glm::vec3(0.0f));
+    for (std::size_t i = 0; i < particles.size(); ++i) splatParticle(particles, i, m);
+    for (const Volume& vol : volumes)
+        for (int z = 0; z < m.size.z; ++z)
+            for (int y = 0; y < m.size.y; ++y)
+                for (int x = 0; x < m.size.x; ++x) {
+                    if (!volumeContains(vol, m.min + (glm::dvec3(x, y, z) + 0.5) * m.voxel)) continue;
+                    const std::size_t v = m.index(x, y, z);
+                    const float sigma = static_cast<float>(vol.sigma());
+                    m.sigma[v] += sigma;
+                    m.scattering[v] += sigma * vol.medium.albedo;
+                    m.sigmaG[v] += sigma * vol.medium.g;
+                    m.emission[v] += sigma * vol.medium.emission;
+                }
+    return m;
+}
+
+void buildEnvironmentGrid(const MediumGrid& medium, const EnvironmentLighting& lighting, const DiffusionSolve& solve, EnvironmentGrid& grid) {
+    static const std::vector<OccluderBox> kNoMeshes;
+    const std::vector<float> environment =
+        medium.count() == 0 ? std::vector<float>{} : environmentTransmittance(medium, lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes);
+    const std::vector<glm::vec3> source = medium.count() == 0 ? std::vector<glm::vec3>{} : firstScattering(medium, lighting, environment);
+    grid.sweeps = 0;
+    grid.size = medium.size;
+    grid.min = medium.min;
+    grid.voxel = glm::dvec3(medium.voxel);
+    grid.texels.clear();
+    grid.fluence = solve.coarser != nullptr ? resampled(*solve.coarser, medium) : std::vector<glm::vec3>{};
+    if (medium.count() == 0) return;
+    grid.sweeps = solveDiffusion(medium, source, grid.fluence, solve);
+    const std::vector<glm::vec3> radiance = dilated(medium, grid.fluence);
+    grid.texels.resize(medium.count());
+    const float inv4Pi = 1.0f / (4.0f * static_cast<float>(kPi));
+    for (std::size_t v = 0; v < medium.count(); ++v) grid.texels[v] = glm::vec4(environment[v], radiance[v] * inv4Pi);
+}
+
+}  // namespace nimbus::media

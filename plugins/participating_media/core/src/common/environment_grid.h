@@ -1,0 +1,60 @@
+#pragma once
+// The light of the multiple-scattering model that the real-time passes read from a grid
+// (docs/scene-format.md §2): a coarse grid over the medium holding, per voxel,
+//   x:   the environment's unscattered light, the mean transmittance towards the outside along 14
+//        directions (the 6 axes and the 8 diagonals), each direction that meets a mesh box counted
+//        dark (its light would be mesh-reflected, which the model leaves out);
+//   yzw: the radiance of light scattered two or more times, φ/4π per unit albedo, from the
+//        diffusion of what the lights and the environment scatter first (common/diffusion.h).
+// Single scattering of the lights stays per particle or voxel, where the passes evaluate it exactly.
+//
+// Does not: resolve anything finer than a voxel (scattered light is the smooth part of the
+// medium's), look past the grid (nothing lies there), or see mesh shadows finer than the boxes.
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/diffusion.h"
+#include "nimbus/media/host.h"
+#include "nimbus/media/particle_set.h"
+#include "nimbus/media/volume.h"
+
+namespace nimbus::media {
+
+struct EnvironmentGrid {
+    glm::ivec3 size{0};
+    glm::dvec3 min{0.0};   // world position of voxel 0's outer corner
+    glm::dvec3 voxel{0.0}; // the same along every axis
+    std::vector<glm::vec4> texels;   // per voxel, x fastest: as above
+    std::vector<glm::vec3> fluence;  // φ
+    int sweeps = 0;                  // the diffusion solve's sweeps this frame (0: the last frame's answer kept)
+    // What the answer was solved for (solveEnvironmentGrid): a frame with the same keeps it.
+    std::vector<double> lighting;
+    std::vector<float> sigma, sigmaG;
+    std::vector<glm::vec3> scattering, emission;
+
+    bool empty() const { return size.x == 0; }
+};
+
+// What lights the medium: the host frame's lights, ambient and mesh boxes.
+struct EnvironmentLighting {
+    const std::vector<Light>* lights = nullptr;
+    glm::vec3 ambient{0.0f};
+    const std::vector<OccluderBox>* meshes = nullptr;
+};
+
+// The medium on a grid of `voxelsAlongLongest` voxels along its longest side plus one of padding
+// around it: the particles' kernels sampled and scaled so each keeps its optical volume (small ones
+// land on their nearest voxel), and the volumes' constant medium where they contain a centre.
+MediumGrid voxelizeMedium(const ParticleSet& particles, const std::vector<Volume>& volumes, int voxelsAlongLongest);
+
+// The grid for `medium`, its solve started from `solve.coarser` where given, else from zero.
+void buildEnvironmentGrid(const MediumGrid& medium, const EnvironmentLighting& lighting, const DiffusionSolve& solve, EnvironmentGrid& grid);
+
+// The medium voxelised and its grid built, the solve started from one on grids of half as many
+// voxels, down to 4; `grid` holds the last frame's, kept when its medium and lighting are the same
+// (so a frame's picture depends on that frame alone, and a still cloud costs no solve).
+void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting,
+                          int voxelsAlongLongest, DiffusionSolve solve, EnvironmentGrid& grid);
+
+}  // namespace nimbus::media

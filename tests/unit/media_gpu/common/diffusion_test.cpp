@@ -1,0 +1,118 @@
+// diffusion.cpp and environment_grid.cpp: the diffusion solve against its closed-form interior,
+// its boundary, warm starts, and the environment grid's transmittance at its limits.
+#include "common/diffusion.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/environment_grid.h"
+
+namespace nimbus::media {
+namespace {
+
+MediumGrid uniform(int n, float sigma, glm::vec3 albedo, float g = 0.0f) {
+    MediumGrid m;
+    m.size = glm::ivec3(n);
+    m.voxel = 1.0;
+    const std::size_t count = static_cast<std::size_t>(n) * n * n;
+    m.sigma.assign(count, sigma);
+    m.scattering.assign(count, sigma * albedo);
+    m.sigmaG.assign(count, sigma * g);
+    m.emission.assign(count, glm::vec3(0.0f));
+    return m;
+}
+
+// Far from the boundary in diffusion lengths, a uniform source Q gives φ = Q / σ_a exactly.
+TEST(Diffusion, UniformInteriorIsSourceOverAbsorption) {
+    const MediumGrid m = uniform(24, 10.0f, glm::vec3(0.9f, 0.5f, 0.0f));  // σ_a 1, 5, 10; diffusion length < 0.2 voxel
+    std::vector<glm::vec3> phi;
+    const int sweeps = solveDiffusion(m, std::vector<glm::vec3>(m.count(), glm::vec3(2.0f)), phi, {.maxSweeps = 500});
+    EXPECT_LT(sweeps, 500);
+    const glm::vec3 centre = phi[m.index(12, 12, 12)];
+    EXPECT_NEAR(centre.x, 2.0f, 2e-3f);
+    EXPECT_NEAR(centre.y, 0.4f, 4e-4f);
+    EXPECT_NEAR(centre.z, 0.2f, 2e-4f);
+    EXPECT_LT(phi[m.index(0, 12, 12)].x, centre.x);  // light leaves through the faces
+}
+
+// A medium that absorbs nothing still ends (its light leaves through the boundary), its fluence
+// falls away from a central source, and a solve started from its own answer stops at once.
+TEST(Diffusion, ConservativeMediumEndsAndWarmStartsInOneSweep) {
+    const MediumGrid m = uniform(16, 2.0f, glm::vec3(1.0f), 0.85f);
+    std::vector<glm::vec3> source(m.count(), glm::vec3(0.0f));
+    source[m.index(8, 8, 8)] = glm::vec3(1.0f);
+    std::vector<glm::vec3> phi;
+    EXPECT_LT(solveDiffusion(m, source, phi, {.maxSweeps = 2000, .tolerance = 1e-7f}), 2000);
+    for (const glm::vec3& f : phi) EXPECT_TRUE(std::isfinite(f.x) && f.x >= 0.0f);
+    for (int x = 9; x < 16; ++x) EXPECT_LT(phi[m.index(x, 8, 8)].x, phi[m.index(x - 1, 8, 8)].x) << x;
+    EXPECT_EQ(solveDiffusion(m, source, phi, {.maxSweeps = 2000, .tolerance = 1e-6f}), 1);
+}
+
+// Voxels without medium hold no fluence, whatever the source says.
+TEST(Diffusion, EmptyVoxelsHoldNothing) {
+    MediumGrid m = uniform(8, 1.0f, glm::vec3(0.9f));
+    m.sigma[m.index(0, 0, 0)] = 0.0f;
+    m.scattering[m.index(0, 0, 0)] = glm::vec3(0.0f);
+    std::vector<glm::vec3> phi;
+    solveDiffusion(m, std::vector<glm::vec3>(m.count(), glm::vec3(1.0f)), phi);
+    EXPECT_EQ(phi[m.index(0, 0, 0)], glm::vec3(0.0f));
+}
+
+ParticleSet oneParticle(float sigma) {
+    ParticleSet p;
+    p.position = {glm::dvec3(0.0)};
+    p.radius = {1.0f};
+    p.sigma = {sigma};
+    p.albedo = {glm::vec3(0.99f)};
+    p.emission = {glm::vec3(0.0f)};
+    p.g = {0.8f};
+    p.phase = {PhaseFunction::HenyeyGreenstein};
+    return p;
+}
+
+// Voxelising keeps each particle's optical volume; a dense particle's centre sees no environment,
+// a thin one's nearly all of it, and the sun adds scattered light in both.
+TEST(EnvironmentGrid, TransmittanceAtItsLimitsAndLightScattered) {
+    for (const float sigma : {1e-3f, 1e3f}) {
+        const ParticleSet p = oneParticle(sigma);
+        const MediumGrid m = voxelizeMedium(p, {}, 16);
+        double sum = 0.0;
+        for (float s : m.sigma) sum += s;
+        const double k = 4.5, exact = sigma * (std::pow(3.14159265358979 / k, 1.5) * std::erf(std::sqrt(k)) - 2.0 * 3.14159265358979 / k * std::exp(-k));
+        EXPECT_NEAR(sum * m.voxel * m.voxel * m.voxel, exact, 1e-4 * exact);
+        const std::vector<Light> sun{Light{.kind = gpu::LightKind::Directional, .direction = glm::dvec3(0.0, -1.0, 0.0), .radiance = glm::vec3(3.0f)}};
+        EnvironmentGrid grid;
+        buildEnvironmentGrid(m, {.lights = &sun, .ambient = glm::vec3(0.2f)}, {}, grid);
+        const glm::ivec3 c = m.size / 2;
+        const glm::vec4 centre = grid.texels[m.index(c.x, c.y, c.z)];
+        if (sigma < 1.0f) {
+            EXPECT_GT(centre.x, 0.999f);
+        } else {
+            EXPECT_LT(centre.x, 1e-3f);
+        }
+        EXPECT_GT(centre.y, 0.0f);
+        EXPECT_TRUE(std::isfinite(centre.y));
+    }
+}
+
+// A frame whose medium and lighting are the last one's keeps its answer without a solve; any
+// change solves from scratch, so the answer never depends on the frames before.
+TEST(EnvironmentGrid, KeepsTheAnswerOnlyForTheSameFrame) {
+    const ParticleSet p = oneParticle(5.0f);
+    const std::vector<Light> sun{Light{.kind = gpu::LightKind::Directional, .direction = glm::dvec3(0.0, -1.0, 0.0), .radiance = glm::vec3(3.0f)}};
+    EnvironmentGrid grid, fresh;
+    solveEnvironmentGrid(p, {}, {.lights = &sun, .ambient = glm::vec3(0.2f)}, 16, {}, grid);
+    EXPECT_GT(grid.sweeps, 0);
+    const std::vector<glm::vec4> first = grid.texels;
+    solveEnvironmentGrid(p, {}, {.lights = &sun, .ambient = glm::vec3(0.2f)}, 16, {}, grid);
+    EXPECT_EQ(grid.sweeps, 0);
+    EXPECT_EQ(grid.texels, first);
+    solveEnvironmentGrid(p, {}, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {}, grid);
+    EXPECT_GT(grid.sweeps, 0);
+    solveEnvironmentGrid(p, {}, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {}, fresh);
+    EXPECT_EQ(grid.texels, fresh.texels);
+}
+
+}  // namespace
+}  // namespace nimbus::media
