@@ -79,9 +79,11 @@ std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::
     ecs::World& world = session.app().world();
     out->world = scene::currentWorldTransforms(world);
     media::ecs::gatherParticles(world, out->particles);
-    // A synthesized camera frames what the real-time path frames: the meshes and the particle spheres.
+    media::ecs::gatherVolumes(world, out->volumes);
+    // A synthesized camera frames what the real-time path frames: the meshes and the medium.
     assets::Aabb bounds = assets::meshBounds(session.scene(), out->world);
     bounds.extend(media::particleBounds(out->particles));
+    bounds.extend(media::volumeBounds(out->volumes));
     out->inputs.scene = &session.scene();
     out->inputs.world = &out->world;
     out->inputs.camera = cameraOverride ? *cameraOverride
@@ -89,6 +91,7 @@ std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::
                                                                 static_cast<double>(width) / height);
     out->inputs.lights = assets::resolveLights(session.scene(), out->world);
     out->inputs.particles = &out->particles;
+    out->inputs.volumes = &out->volumes;
     return out;
 }
 

@@ -62,6 +62,7 @@ private:
 struct ReferenceScene {
     std::vector<glm::dmat4> world;
     media::ParticleSet particles;
+    std::vector<media::Volume> volumes;
     media::reference::ReferenceInputs inputs;
 };
 // `cameraOverride`, when given, replaces the named camera (the editor's free camera).

@@ -123,14 +123,34 @@ TEST(MediaScene, RefusesMalformedMedia) {
     expectRefusal({{"medium", {{"extinction", 1.0}, {"color", 1}}}}, {"medium.color", "unknown key"});
 }
 
-// A volume is checked field by field, and then refused whole: no renderer draws a scene's volumes yet.
-TEST(MediaScene, RefusesVolumes) {
+TEST(MediaScene, RefusesMalformedVolumes) {
     const nlohmann::json ok = {{"extinction", 1.0}};
     expectRefusal({{"medium", ok}, {"volume", {{"shape", "cone"}, {"size", {1, 1, 1}}}}}, {"volume.shape", "cone"});
+    expectRefusal({{"medium", ok}, {"volume", {{"size", {1, 1, 1}}}}}, {"volume.shape", "required"});
+    expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}}}}, {"volume.size", "required"});
     expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 0, 1}}}}}, {"volume.size[1]", "> 0"});
     expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, -2, 1}}}}}, {"volume.size[1]", "> 0"});
-    expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 1, 1}}, {"noise", 1}}}}, {"volume.noise", "unknown key"});
-    expectRefusal({{"medium", ok}, {"volume", {{"shape", "ellipsoid"}, {"size", {1, 1, 1}}}}}, {"volume", "not drawn yet"});
+    expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 1}}}}}, {"volume.size", "3 numbers"});
+    expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 1, 1}}, {"colour", 1}}}}, {"volume.colour", "unknown key"});
+}
+
+// A volume is placed by its node's world transform and names its node for the renderers' messages.
+TEST(MediaScene, VolumesTakeTheirNodesTransform) {
+    GltfFixture f;
+    f.addNode({{"name", "bank"},
+               {"translation", {1.0, 2.0, 3.0}},
+               {"extensions", {{"NIMBUS_participating_media", {{"medium", {{"extinction", 0.5}}}, {"volume", {{"shape", "ellipsoid"}, {"size", {4, 2, 6}}}}}}}}});
+    const assets::Scene scene = assets::loadScene(f.write("bank"));
+    const MediaScene media = parseMediaScene(AssetsDocument(scene));
+    ASSERT_EQ(media.nodes.size(), 1u);
+    ASSERT_TRUE(media.nodes[0].volume.has_value());
+    EXPECT_EQ(media.nodes[0].volume->shape, VolumeShape::Ellipsoid);
+    const std::vector<Volume> volumes = sceneVolumes(media, AssetsDocument(scene).worldTransforms(0.0));
+    ASSERT_EQ(volumes.size(), 1u);
+    EXPECT_EQ(volumes[0].size, glm::dvec3(4, 2, 6));
+    EXPECT_TRUE(volumeContains(volumes[0], {1.0, 2.0, 5.9}));
+    EXPECT_FALSE(volumeContains(volumes[0], {1.0, 2.0, 6.1}));
+    EXPECT_NE(volumes[0].origin.find("bank.gltf: node \"bank\" (nodes[0])"), std::string::npos) << volumes[0].origin;
 }
 
 TEST(MediaScene, RefusesMalformedParticles) {

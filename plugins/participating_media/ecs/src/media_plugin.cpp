@@ -81,6 +81,7 @@ void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaSce
             log::warn(scene.displayName() + ": node \"" + node.name + "\": non-uniform scale on a particle cloud; radii use the mean scale");
         if (!node.localPositions.empty())
             world.emplace<ParticleCloud>(e, ParticleCloud{node.localPositions, node.radii, node.densities});
+        if (node.volume) world.emplace<VolumeComponent>(e, VolumeComponent{*node.volume, node.origin});
         if (!node.emitter.is_null())
             world.emplace<EmitterComponent>(e, EmitterComponent{EmitterSimulation(parseNodeEmitter(AssetsDocument(scene), node), node.node),
                                                                 world.get<scene::Transform>(e).world});
@@ -102,9 +103,11 @@ void emitSystem(World& world) {
 void gatherSystem(World& world) {
     auto& frame = world.resource<MediaFrame>();
     frame.particles.clear();
+    frame.volumes.clear();
     if (world.count<MediumComponent>() == 0) return;
     frame.settings = readMediaSettings(world);
     gatherParticles(world, frame.particles);
+    gatherVolumes(world, frame.volumes);
 }
 
 void renderSystem(World& world) {
@@ -113,7 +116,7 @@ void renderSystem(World& world) {
     auto* extensions = world.tryResource<render::RenderExtensions>();
     if (extensions == nullptr) return;  // a host without the render plugin: nothing to draw into
     auto& list = extensions->list;
-    const bool active = !frame.particles.empty();
+    const bool active = !frame.particles.empty() || !frame.volumes.empty();
     if (!active && !state.renderer) return;
     if (!state.renderer) {
         state.renderer = std::make_unique<MediaRenderer>(world.resource<MediaTechniques>().table);
@@ -122,7 +125,7 @@ void renderSystem(World& world) {
     auto registered = std::find(list.begin(), list.end(), state.extension.get());
     if (active && registered == list.end()) list.push_back(state.extension.get());
     if (!active && registered != list.end()) list.erase(registered);
-    state.renderer->prepare(frame.particles, frame.settings);
+    state.renderer->prepare(frame.particles, frame.settings, &frame.volumes);
 }
 
 }  // namespace
@@ -166,11 +169,23 @@ void gatherParticles(World& world, ParticleSet& out) {
         world.get<EmitterComponent>(e).simulation.appendParticles(out, world.get<MediumComponent>(e).medium);
 }
 
+void gatherVolumes(World& world, std::vector<Volume>& out) {
+    std::vector<std::pair<int, Entity>> entities;
+    world.view<const VolumeComponent, const scene::SceneNode>().each(
+        [&](Entity e, const VolumeComponent&, const scene::SceneNode& node) { entities.emplace_back(node.node, e); });
+    std::sort(entities.begin(), entities.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [node, e] : entities) {
+        const VolumeComponent& v = world.get<VolumeComponent>(e);
+        out.push_back(makeVolume(v.desc, world.get<scene::Transform>(e).world, world.get<MediumComponent>(e).medium, v.origin));
+    }
+}
+
 void MediaPlugin::build(nimbus::ecs::App& app) {
     app.addPlugin<scene::ScenePlugin>();
     app.addPlugin<render::RenderPlugin>();  // draws nothing until a host enables rendering
     app.registerComponent<MediumComponent>("Medium");
     app.registerComponent<ParticleCloud>("ParticleCloud");
+    app.registerComponent<VolumeComponent>("Volume");
     app.registerComponent<EmitterComponent>("Emitter");
     app.insertResource<MediaFrame>();
     app.insertResource<MediaRendererState>();

@@ -136,8 +136,9 @@ void parseVolume(const nlohmann::json& object, const Where& where, MediaNode& ou
     refuseUnknownKeys(object, {"shape", "size"}, where, "volume");
     if (!object.contains("shape")) where.fail("volume.shape", "is required: \"box\" or \"ellipsoid\"");
     const nlohmann::json& shape = object["shape"];
-    if (shape == "box") out.volumeShape = VolumeShape::Box;
-    else if (shape == "ellipsoid") out.volumeShape = VolumeShape::Ellipsoid;
+    VolumeDesc desc;
+    if (shape == "box") desc.shape = VolumeShape::Box;
+    else if (shape == "ellipsoid") desc.shape = VolumeShape::Ellipsoid;
     else where.fail("volume.shape", "unknown shape " + shape.dump() + " (known: \"box\", \"ellipsoid\")");
     if (!object.contains("size")) where.fail("volume.size", "is required: [x, y, z] in metres");
     const nlohmann::json& size = object["size"];
@@ -146,8 +147,9 @@ void parseVolume(const nlohmann::json& object, const Where& where, MediaNode& ou
         const std::string element = "volume.size[" + std::to_string(c) + "]";
         const double v = readNumber(size[static_cast<std::size_t>(c)], where, element);
         if (!(v > 0.0) || v > 1e12) where.fail(element, "must be > 0 (and at most 1e12 m), not " + size[static_cast<std::size_t>(c)].dump());
-        out.volumeSize[c] = v;
+        desc.size[c] = v;
     }
+    out.volume = desc;
 }
 
 }  // namespace
@@ -170,14 +172,10 @@ MediaScene parseMediaScene(const GltfDocument& scene) {
         MediaNode out;
         out.node = static_cast<int>(n);
         out.name = name;
+        out.origin = file + ": " + where.node;
         out.medium = parseMedium(object["medium"], where);
         if (object.contains("particles")) parseParticles(scene, object["particles"], where, out);
-        if (object.contains("volume")) {
-            parseVolume(object["volume"], where, out);
-            // Checked in full above, so the message says what is wrong with it first; refused until a
-            // scene's volumes reach the renderers, rather than dropped from the picture.
-            where.fail("volume", "is not drawn yet: neither the real-time modes nor `sandbox reference` read a scene's volumes");
-        }
+        if (object.contains("volume")) parseVolume(object["volume"], where, out);
         if (object.contains("emitter")) out.emitter = object["emitter"];
         if (object.contains("render")) out.render = object["render"];
         if (!out.emitter.is_null()) (void)parseNodeEmitter(scene, out);  // refuse a bad emitter at load, not mid-run
@@ -225,10 +223,10 @@ ParticleSet staticParticles(const MediaScene& media, const std::vector<glm::dmat
 std::vector<Volume> sceneVolumes(const MediaScene& media, const std::vector<glm::dmat4>& world) {
     std::vector<Volume> out;
     for (const MediaNode& n : media.nodes) {
-        if (!n.volumeShape) continue;
+        if (!n.volume) continue;
         const glm::dmat4 m = n.node >= 0 && static_cast<std::size_t>(n.node) < world.size() ? world[static_cast<std::size_t>(n.node)]
                                                                                             : glm::dmat4(1.0);
-        out.push_back(makeVolume(*n.volumeShape, m, n.volumeSize, n.medium));
+        out.push_back(makeVolume(*n.volume, m, n.medium, n.origin));
     }
     return out;
 }

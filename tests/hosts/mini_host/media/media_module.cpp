@@ -21,6 +21,7 @@ void spawn(ecs::World& world) {
         const media::MediaNode& node = state.scene.nodes[i];
         const ecs::Entity entity = asset.nodeEntities.at(static_cast<std::size_t>(node.node));
         if (!node.localPositions.empty()) world.add<StaticCloud>(entity, StaticCloud{i});
+        if (node.volume) world.add<VolumeNode>(entity, VolumeNode{i});
         if (!node.emitter.is_null())
             world.add<Emitter>(entity, Emitter{i, media::EmitterSimulation(media::parseNodeEmitter(*state.document, node), node.node)});
     }
@@ -64,9 +65,14 @@ void gather(ecs::World& world) {
     }
     for (const auto& [index, entity] : inMediaOrder<Emitter>(world))
         world.get<Emitter>(entity)->simulation.appendParticles(state.particles, state.scene.nodes[index].medium);
-    if (state.particles.empty()) return;
+    state.volumes.clear();
+    for (const auto& [index, entity] : inMediaOrder<VolumeNode>(world)) {
+        const media::MediaNode& node = state.scene.nodes[index];
+        state.volumes.push_back(media::makeVolume(*node.volume, world.get<WorldTransform>(entity)->matrix, node.medium, node.origin));
+    }
+    if (state.empty()) return;
     if (!state.renderer) state.renderer = std::make_unique<media::MediaRenderer>();
-    state.renderer->prepare(state.particles, world.singleton<MediaSettings>().settings);
+    state.renderer->prepare(state.particles, world.singleton<MediaSettings>().settings, &state.volumes);
 }
 
 // World boxes of the instances' meshes, which blocks mode shades exactly where they reach.
@@ -104,11 +110,11 @@ void installHooks(ecs::World& world) {
     MediaHooks hooks;
     hooks.bounds = [](ecs::World& w) {
         const MediaState& state = w.singleton<MediaState>();
-        return state.particles.empty() ? nimbus::Aabb{} : state.renderer->bounds();
+        return state.empty() ? nimbus::Aabb{} : state.renderer->bounds();
     };
     hooks.beforeOpaque = [](ecs::World& w, const FrameInput& frame, const MeshRenderer& meshes) {
         MediaState& state = w.singleton<MediaState>();
-        if (state.particles.empty()) return false;
+        if (state.empty()) return false;
         makeHostFrame(state, frame, meshes, *w.singleton<SceneAsset>().scene);
         const media::LightSlices slices = state.renderer->renderLightSlices(state.frame);
         slices.bind();
@@ -116,7 +122,7 @@ void installHooks(ecs::World& world) {
     };
     hooks.afterOpaque = [](ecs::World& w, const FrameInput&, const MeshRenderer& meshes) {
         MediaState& state = w.singleton<MediaState>();
-        if (state.particles.empty()) return MediaLayerRef{};
+        if (state.empty()) return MediaLayerRef{};
         state.frame.sceneDepth = meshes.sceneDepth();
         const media::MediaLayer layer = state.renderer->renderMedia(state.frame);
         return MediaLayerRef{layer.color, layer.size.x, layer.size.y, layer.depthUsed, layer.edgeThreshold};

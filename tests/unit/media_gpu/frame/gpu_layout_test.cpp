@@ -94,6 +94,13 @@ TEST_F(MediaGpuLayout, ScatteringMatchesGpuScattering) {
     }
 }
 
+TEST_F(MediaGpuLayout, VolumesMatchGpuVolume) {
+    const gpu::Program program = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/volume_slices.frag"});
+    expectMembers(program.id(), GL_BUFFER_VARIABLE, "volumes[0].", {{"toUnit", offsetof(GpuVolume, toUnit)}, {"medium", offsetof(GpuVolume, medium)}});
+    EXPECT_EQ(topLevelArrayStride(program.id(), "volumes[0].toUnit"), static_cast<GLint>(sizeof(GpuVolume)));
+    EXPECT_EQ(storageBinding(program.id(), "MediaVolumes"), static_cast<GLint>(kVolumesBinding));
+}
+
 // The texture unit a sampler uniform is bound to in `program` (its layout(binding) value).
 GLint samplerUnit(GLuint program, const char* sampler) {
     const GLint location = glGetUniformLocation(program, sampler);

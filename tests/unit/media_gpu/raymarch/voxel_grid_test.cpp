@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 namespace nimbus::media {
 namespace {
 
@@ -23,7 +25,7 @@ std::size_t index(const VoxelGrid& g, int x, int y, int z) {
 }
 
 TEST(VoxelGrid, VoxelCentresHoldTheKernel) {
-    const VoxelGrid g = voxelize(oneParticle({1e5, 2.0, -3.0}, 0.9f, 4.0f), 18);  // far from the origin on purpose
+    const VoxelGrid g = voxelize(oneParticle({1e5, 2.0, -3.0}, 0.9f, 4.0f), {}, 18);  // far from the origin on purpose
     ASSERT_FALSE(g.empty());
     double maxSigma = 0.0, mass = 0.0;
     for (int z = 0; z < g.size.z; ++z)
@@ -47,7 +49,7 @@ TEST(VoxelGrid, VoxelCentresHoldTheKernel) {
 }
 
 TEST(VoxelGrid, APaddingVoxelSurroundsTheSpheres) {
-    const VoxelGrid g = voxelize(oneParticle({0.0, 0.0, 0.0}, 1.0f, 1.0f), 0);
+    const VoxelGrid g = voxelize(oneParticle({0.0, 0.0, 0.0}, 1.0f, 1.0f), {}, 0);
     for (int y = 0; y < g.size.y; ++y)
         for (int x = 0; x < g.size.x; ++x) {
             EXPECT_EQ(g.scattering[index(g, x, y, 0)].w, 0.0f);
@@ -60,9 +62,31 @@ TEST(VoxelGrid, AutomaticSizeIsCappedAndEmptyInputGivesNoGrid) {
     ParticleSet p = oneParticle({0.0, 0.0, 0.0}, 0.01f, 1.0f);
     Medium m;
     p.push({500.0, 0.0, 0.0}, 0.01f, 1.0f, m);
-    const VoxelGrid g = voxelize(p, 0);
+    const VoxelGrid g = voxelize(p, {}, 0);
     EXPECT_LE(std::max({g.size.x, g.size.y, g.size.z}), kMaxAutoVoxels + 2);
-    EXPECT_TRUE(voxelize(ParticleSet{}, 0).empty());
+    EXPECT_TRUE(voxelize(ParticleSet{}, {}, 0).empty());
+}
+
+// A volume adds σ times the share of each voxel it covers: whole voxels inside hold σ, and the sum
+// over the grid is σ times the volume's size, even where its faces fall between voxel centres.
+TEST(VoxelGrid, VolumesAddTheirCoveredShare) {
+    Medium m;
+    m.albedo = glm::vec3(0.25f, 0.5f, 1.0f);
+    m.g = 0.5f;
+    const glm::dmat4 world = glm::translate(glm::dmat4(1.0), glm::dvec3(1e4, 0.3, -2.0));  // far from the origin on purpose
+    const Volume box = makeVolume(VolumeShape::Box, world, {2.0, 1.0, 1.5}, m);
+    const VoxelGrid g = voxelize(ParticleSet{}, {box}, 40);
+    EXPECT_NEAR(g.voxel.x, 2.0 / 40.0, 1e-12);
+    double sum = 0.0;
+    for (const glm::vec4& v : g.scattering) sum += v.w;
+    const double voxelVolume = g.voxel.x * g.voxel.y * g.voxel.z;
+    EXPECT_NEAR(sum * voxelVolume, box.sigma() * 2.0 * 1.0 * 1.5, 0.01 * box.sigma() * 3.0);  // 4³ sub-samples on the faces
+    const glm::ivec3 centre = glm::ivec3((glm::dvec3(1e4, 0.3, -2.0) - g.min) / g.voxel.x);
+    const std::size_t v = index(g, centre.x, centre.y, centre.z);
+    EXPECT_FLOAT_EQ(g.scattering[v].w, box.medium.extinction);
+    EXPECT_FLOAT_EQ(g.scattering[v].x, 0.25f * box.medium.extinction);
+    EXPECT_FLOAT_EQ(g.emission[v].w, 0.5f * box.medium.extinction);
+    EXPECT_FALSE(g.rayleigh);
 }
 
 }  // namespace

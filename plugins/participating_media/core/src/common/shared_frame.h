@@ -11,6 +11,7 @@
 #include "common/frame_blocks.h"
 #include "common/media_target.h"
 #include "common/particle_buffer.h"
+#include "common/volume_buffer.h"
 #include "nimbus/base/aabb.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/light_views.h"
@@ -29,8 +30,10 @@ struct SharedFrame {
     // Made with the first frame that draws something (they need the GL context).
     std::unique_ptr<ParticleGpuBuffer> buffer;
     std::unique_ptr<FrameBlocks> blocks;
+    std::unique_ptr<VolumeGpuBuffer> volumes;  // made with the first frame that has a volume
+    std::size_t volumeCount = 0;               // this frame's (the buffer is filled when the graph runs)
     MediaTarget target;
-    Aabb bounds;                        // the particle spheres', world space
+    Aabb bounds;                        // the particle spheres' and the volumes', world space
     double coverage = 0.0;              // how many times over the billboards cover the image
     std::vector<SliceView> sliceViews;  // every light's, in GraphFrame::sliceViews order
     int sliceResolution = 0;            // texels per side of every slice

@@ -32,6 +32,15 @@ bool MediaRenderer::readsOccluders() const {
     return technique_ != nullptr && (technique_->readsOccluders() || techniques_.at(settings_.mode).multipleScattering);
 }
 
+// A mode that does not draw volumes refuses a frame with one rather than leave it out of the picture.
+void MediaRenderer::refuseVolumes(const TechniqueEntry& entry, const Volume& volume) const {
+    std::string drawing;
+    for (const TechniqueEntry& e : techniques_.entries())
+        if (e.volumes) drawing += (drawing.empty() ? "" : ", ") + e.name;
+    throwInputError(volume.origin.empty() ? "a volume" : volume.origin, "", "extensions.NIMBUS_participating_media.volume",
+                    "media mode " + entry.name + " does not draw volumes (modes that do: " + (drawing.empty() ? "none" : drawing) + ")");
+}
+
 MediaTechnique& MediaRenderer::technique(const TechniqueEntry& entry) {
     std::unique_ptr<MediaTechnique>& made = made_[entry.name];
     if (!made) made = entry.create();
@@ -40,8 +49,7 @@ MediaTechnique& MediaRenderer::technique(const TechniqueEntry& entry) {
 
 void MediaRenderer::prepare(const ParticleSet& particles, const MediaRenderSettings& settings, const std::vector<Volume>* volumes) {
     const TechniqueEntry& entry = techniques_.at(settings.mode, "media mode");
-    if (volumes != nullptr && !volumes->empty() && !entry.volumes)
-        throw InputError("media mode " + entry.name + " does not draw volumes (a scene with one needs a mode that does)");
+    if (volumes != nullptr && !volumes->empty() && !entry.volumes) refuseVolumes(entry, volumes->front());
     particles_ = &particles;
     volumes_ = volumes != nullptr ? volumes : &noVolumes_;
     settings_ = withDefaults(settings);
@@ -64,6 +72,7 @@ void MediaRenderer::addUploadPass(gpu::FrameGraph& graph, GraphFrame& context) {
         [this, &context](const gpu::PassResources&, const Upload&) {
             shared_->blocks->upload();
             shared_->buffer->upload(*particles_, context.host.camera.origin);
+            if (!volumes_->empty()) shared_->volumes->upload(*volumes_, context.host.camera.origin);
             const EnvironmentGrid& grid = shared_->environment;
             if (!grid.empty())
                 glTextureSubImage3D(shared_->environmentTexture.id(), 0, 0, 0, 0, grid.size.x, grid.size.y, grid.size.z, GL_RGBA, GL_FLOAT,
@@ -97,6 +106,8 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
     SharedFrame& shared = *shared_;
     if (!shared.buffer) shared.buffer = std::make_unique<ParticleGpuBuffer>();
     if (!shared.blocks) shared.blocks = std::make_unique<FrameBlocks>();
+    if (!volumes_->empty() && !shared.volumes) shared.volumes = std::make_unique<VolumeGpuBuffer>();
+    shared.volumeCount = volumes_->size();
     context.blocks = shared.blocks.get();
     planTarget(context);
     technique_->plan(frame_, context);
@@ -132,7 +143,7 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
         const auto lightViews = gpu::makeLightViews(light, shared.bounds, origin);
         perLight[i] = glm::ivec2(static_cast<int>(shared.sliceViews.size()), static_cast<int>(lightViews.size()));
         for (auto view : lightViews) {
-            const SliceEstimate estimate = estimateSlices(*particles_, view, origin);
+            const SliceEstimate estimate = estimateSlices(*particles_, *volumes_, view, origin);
             const int slices = settings_.slices > 0 ? std::clamp(settings_.slices, kMinSlices, kMaxSlices) : estimate.slices;
             view.depthNear = static_cast<float>(estimate.depthNear);
             view.depthFar = static_cast<float>(estimate.depthFar);

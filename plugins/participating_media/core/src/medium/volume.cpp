@@ -7,7 +7,13 @@
 namespace nimbus::media {
 
 Volume makeVolume(VolumeShape shape, const glm::dmat4& world, const glm::dvec3& size, const Medium& medium) {
-    return {shape, world, glm::inverse(world), size, medium};
+    return {shape, world, glm::inverse(world), size, medium, {}};
+}
+
+Volume makeVolume(const VolumeDesc& desc, const glm::dmat4& world, const Medium& medium, std::string origin) {
+    Volume v = makeVolume(desc.shape, world, desc.size, medium);
+    v.origin = std::move(origin);
+    return v;
 }
 
 VolumeChord volumeChord(const Volume& v, const glm::dvec3& origin, const glm::dvec3& dir) {

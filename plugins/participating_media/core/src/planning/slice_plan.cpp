@@ -62,6 +62,39 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const gpu::LightView&
     return e;
 }
 
+SliceEstimate estimateSlices(const ParticleSet& particles, const std::vector<Volume>& volumes, const gpu::LightView& view,
+                             const glm::dvec3& origin) {
+    SliceEstimate e = estimateSlices(particles, view, origin);
+    if (volumes.empty()) return e;
+    const glm::dmat4 viewMatrix(view.view);
+    double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest, column = 0.0;
+    for (const Volume& v : volumes) {
+        const Aabb box = volumeBounds(v);
+        for (int c = 0; c < 8; ++c) {
+            const glm::dvec3 corner(c & 1 ? box.max.x : box.min.x, c & 2 ? box.max.y : box.min.y, c & 4 ? box.max.z : box.min.z);
+            const double depth = -(viewMatrix * glm::dvec4(corner - origin, 1.0)).z;
+            nearest = std::min(nearest, depth);
+            farthest = std::max(farthest, depth);
+        }
+        column = std::max(column, v.sigma() * glm::length(box.max - box.min));
+    }
+    const double spacing = particles.empty() ? 0.0 : e.depthExtent / e.slices;
+    if (!particles.empty()) {
+        nearest = std::min(nearest, e.depthNear);
+        farthest = std::max(farthest, e.depthFar);
+    }
+    e.depthNear = std::max(nearest, static_cast<double>(view.depthNear));
+    e.depthFar = std::max(farthest, e.depthNear + 1e-6);
+    e.depthExtent = e.depthFar - e.depthNear;
+    e.columnDepth = std::max(e.columnDepth, column);
+    // Inside a constant volume τ grows linearly, which the slices interpolate exactly; its faces
+    // and its column's size set the spacing as a particle's would.
+    double wanted = std::max(spacing > 0.0 ? e.depthExtent / spacing : 0.0, 2.0 * e.columnDepth);
+    const int rounded = 4 * static_cast<int>(std::ceil(std::min(wanted, static_cast<double>(kMaxSlices)) / 4.0));
+    e.slices = std::clamp(rounded, kMinSlices, kMaxSlices);
+    return e;
+}
+
 int sliceResolutionFor(const SliceEstimate& estimate, const gpu::LightView& view, double texelsPerRadius) {
     constexpr int kMin = 32, kMax = 256;
     if (!(estimate.medianSpan > 0.0)) return kMax;

@@ -30,7 +30,7 @@ public:
     gpu::ResourceHandle addMedia(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) override {
         const RaymarchSettings own = techniqueSettings<RaymarchSettings>(*frame.settings);
         if (!pass_) pass_ = std::make_unique<RaymarchPass>();
-        const VoxelGrid grid = voxelize(*frame.particles, own.voxels);
+        const VoxelGrid grid = voxelize(*frame.particles, *frame.volumes, own.voxels);
         frame.report("voxels_x", static_cast<long long>(grid.size.x));
         frame.report("voxels_y", static_cast<long long>(grid.size.y));
         frame.report("voxels_z", static_cast<long long>(grid.size.z));
@@ -47,8 +47,9 @@ private:
 
 TechniqueEntry raymarchTechnique() {
     return {.name = "raymarch",
-            .help = "the particles voxelised each frame and the grid ray-marched per pixel, lit through the light slices",
+            .help = "the particles and volumes voxelised each frame and the grid ray-marched per pixel, lit through the light slices",
             .sliceDeposit = true,
+            .volumes = true,
             .settings = specsOf(kRaymarchFields),
             .read = readerOf(kRaymarchFields),
             .create = [] { return std::make_unique<RaymarchTechnique>(); },

@@ -1,14 +1,17 @@
 #pragma once
-// `raymarch` mode's grid (seed 002): the particles' medium sampled at voxel centres, σ_t with the
-// σ-weighted albedo, emission and phase asymmetry, for the GPU to interpolate trilinearly.
+// `raymarch` mode's grid (seed 002): the medium sampled at voxel centres, σ_t with the σ-weighted
+// albedo, emission and phase asymmetry, for the GPU to interpolate trilinearly. Particles add their
+// kernels at the centres; a volume adds its σ times the share of the voxel it covers, so its faces
+// land between voxel centres where they lie rather than on the nearest one.
 //
-// Does not: filter (a voxel holds the kernel sums at its centre) or keep more than one phase
-// function (mixed media march with Henyey–Greenstein).
+// Does not: filter particles (a voxel holds the kernel sums at its centre) or keep more than one
+// phase function (mixed media march with Henyey–Greenstein).
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/volume.h"
 
 namespace nimbus::media {
 
@@ -24,11 +27,15 @@ struct VoxelGrid {
 };
 
 // The voxel side when none is asked: a third of the small particles' radius (the kernel's standard
-// deviation; 10th percentile), with the longest side at most `kMaxAutoVoxels` voxels.
+// deviation; 10th percentile), with the longest side at most `kMaxAutoVoxels` voxels; with a volume
+// (whose faces are sharp) the longest side gets all of them.
 inline constexpr int kMaxAutoVoxels = 96;
+// A voxel that a volume's surface crosses is covered by the share of these sub-samples (per axis)
+// inside it.
+inline constexpr int kCoverageSamples = 4;
 
-// `voxelsAlongLongest` > 0 fixes the grid's longest side; 0 chooses it from the particle size.
-// A voxel of padding surrounds the particles' spheres, so the grid fades to zero at its faces.
-VoxelGrid voxelize(const ParticleSet& particles, int voxelsAlongLongest);
+// `voxelsAlongLongest` > 0 fixes the grid's longest side; 0 chooses it from the medium.
+// A voxel of padding surrounds the medium, so the grid fades to zero at its faces.
+VoxelGrid voxelize(const ParticleSet& particles, const std::vector<Volume>& volumes, int voxelsAlongLongest);
 
 }  // namespace nimbus::media

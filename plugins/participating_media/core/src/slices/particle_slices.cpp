@@ -6,6 +6,7 @@
 #include "slices/light_slice_deposit_pass.h"
 #include "slices/light_slice_pass.h"
 #include "slices/light_slice_prefix_pass.h"
+#include "slices/volume_slice_pass.h"
 
 namespace nimbus::media {
 
@@ -32,10 +33,14 @@ void ParticleSlices::add(gpu::FrameGraph& graph, GraphFrame& context, const Part
         const gpu::ResourceHandle slabs =
             deposit_->add(graph, views, shared.sliceResolution, *shared.buffer, std::move(pieces), std::move(firstPiece));
         context.slices = prefix_->add(graph, views, shared.sliceResolution, slabs);
-        return;
+    } else {
+        if (!plain_) plain_ = std::make_unique<LightSlicePass>();
+        context.slices = plain_->add(graph, views, shared.sliceResolution, *shared.buffer);
     }
-    if (!plain_) plain_ = std::make_unique<LightSlicePass>();
-    context.slices = plain_->add(graph, views, shared.sliceResolution, *shared.buffer);
+    if (shared.volumeCount > 0) {
+        if (!volumes_) volumes_ = std::make_unique<VolumeSlicePass>();
+        context.slices = volumes_->add(graph, context.slices, views, shared.sliceResolution, *shared.volumes);
+    }
 }
 
 }  // namespace nimbus::media

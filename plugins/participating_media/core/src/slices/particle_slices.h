@@ -1,7 +1,8 @@
 #pragma once
 // The light slices drawn from the particles one by one, as the modes without blocks have them:
 // the plain pass (every particle into every slice of a view), or in deposit form (each particle
-// into the slabs it reaches, then a running sum) where slice_deposit asks for it.
+// into the slabs it reaches, then a running sum) where slice_deposit asks for it; then the frame's
+// volumes added onto them, where it has some.
 #include <memory>
 
 #include "nimbus/gpu/frame_graph.h"
@@ -15,6 +16,7 @@ namespace nimbus::media {
 class LightSlicePass;
 class LightSliceDepositPass;
 class LightSlicePrefixPass;
+class VolumeSlicePass;
 
 class ParticleSlices {
 public:
@@ -28,6 +30,7 @@ private:
     std::unique_ptr<LightSlicePass> plain_;  // each made when first needed
     std::unique_ptr<LightSliceDepositPass> deposit_;
     std::unique_ptr<LightSlicePrefixPass> prefix_;
+    std::unique_ptr<VolumeSlicePass> volumes_;
 };
 
 }  // namespace nimbus::media

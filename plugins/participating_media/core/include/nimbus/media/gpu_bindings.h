@@ -48,6 +48,7 @@ inline constexpr GLuint kLampSliceParticlesBinding = 9;  // MEDIA_LAMP_SLICE_PAR
 inline constexpr GLuint kParticleLightBinding = 10;      // MEDIA_PARTICLE_LIGHT_BINDING
 inline constexpr GLuint kBlockNeighboursBinding = 10;    // MEDIA_BLOCK_NEIGHBOURS_BINDING (blocks mode only)
 inline constexpr GLuint kSlicePiecesBinding = 11;        // MEDIA_SLICE_PIECES_BINDING
+inline constexpr GLuint kVolumesBinding = 12;            // MEDIA_VOLUMES_BINDING
 
 // The MediaSliceViews uniform block.
 struct alignas(16) GpuSliceViews {
@@ -60,6 +61,12 @@ struct alignas(16) GpuSliceViews {
 struct alignas(16) GpuScattering {
     glm::vec4 gridMin{0.0f};        // xyz origin-relative corner of the environment grid
     glm::vec4 gridInvExtent{0.0f};  // xyz 1 / its extent
+};
+
+// One volume of the MediaVolumes storage buffer (shaders/media/common/volumes.glsl, volume.h).
+struct alignas(16) GpuVolume {
+    glm::mat4 toUnit{1.0f};    // frame-relative world → the node's frame scaled to the unit cube [−1, 1]³ or unit sphere
+    glm::vec4 medium{0.0f};    // x σ_t (1/m), y shape (0 box, 1 ellipsoid)
 };
 
 }  // namespace nimbus::media

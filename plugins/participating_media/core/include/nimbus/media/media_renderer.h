@@ -88,6 +88,7 @@ private:
     void planSliceViews(const GraphFrame& frame, std::vector<glm::ivec2>& perLight);
     void planScattering(GraphFrame& frame);  // the multiple-scattering model's environment grid
     MediaTechnique& technique(const TechniqueEntry& entry);  // made when first used
+    [[noreturn]] void refuseVolumes(const TechniqueEntry& entry, const Volume& volume) const;
 
     TechniqueTable techniques_;
     std::map<std::string, std::unique_ptr<MediaTechnique>> made_;

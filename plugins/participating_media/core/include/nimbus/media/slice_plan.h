@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "nimbus/media/particle_set.h"
+#include "nimbus/media/volume.h"
 #include "nimbus/gpu/light_views.h"
 
 namespace nimbus::media {
@@ -38,6 +39,10 @@ int sliceResolutionFor(const SliceEstimate& estimate, const gpu::LightView& view
 
 // `view` is a light view of the medium; `origin` the frame origin its matrices are relative to.
 SliceEstimate estimateSlices(const ParticleSet& particles, const gpu::LightView& view, const glm::dvec3& origin);
+// The same with volumes (volume.h) too: the depth range covers their boxes, the particles' slice
+// spacing is kept across it, and a volume's column (σ times its longest chord) counts as τ_column.
+SliceEstimate estimateSlices(const ParticleSet& particles, const std::vector<Volume>& volumes, const gpu::LightView& view,
+                             const glm::dvec3& origin);
 
 // The deposit form of the slices (light_slice_deposit_pass.cpp): every particle is drawn once into
 // each slab, between two consecutive slice planes, that its sphere reaches. Slab k spans view depth

@@ -38,8 +38,8 @@ struct MediaNode {
     std::vector<glm::vec3> localPositions;  // the node's local frame
     std::vector<float> radii;
     std::vector<float> densities;  // same count as localPositions (1 where the file gave none)
-    std::optional<VolumeShape> volumeShape;  // a `volume` object
-    glm::dvec3 volumeSize{0.0};
+    std::optional<VolumeDesc> volume;  // a `volume` object
+    std::string origin;                // file: node "name" (nodes[i]), for the renderers' messages
     nlohmann::json emitter;        // null when absent
     nlohmann::json render;         // null when absent
 };
@@ -66,7 +66,8 @@ void appendCloudParticles(ParticleSet& out, const Medium& medium, const std::vec
 // Whether `world` scales uniformly (spheres stay spheres); callers warn when it does not.
 bool hasUniformScale(const glm::dmat4& world);
 
-// The volumes of the scene placed by `world` (a node's world transform, per node index).
+// The volumes of the scene placed by `world` (a node's world transform, per node index), each
+// naming its node in Volume::origin.
 std::vector<Volume> sceneVolumes(const MediaScene& media, const std::vector<glm::dmat4>& world);
 
 // Every particle of the scene at `timeSeconds` for hosts without the ECS: the static clouds posed at

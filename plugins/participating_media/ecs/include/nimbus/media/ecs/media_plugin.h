@@ -1,7 +1,7 @@
 #pragma once
 // The participating-media plugin for Nimbus's ECS: the thin adapter over the host-agnostic core.
 // build() registers, in one place:
-//   components  Medium, ParticleCloud, Emitter
+//   components  Medium, ParticleCloud, Volume, Emitter
 //   Simulate    media.emit          steps every emitter with its node's transform at both step ends
 //   Prepare     media.light_slices  gathers the particle set and plans the light slices
 //   Render      media.render        hands the frame to the MediaRenderer (through MediaRenderExtension)
@@ -24,6 +24,7 @@
 #include "nimbus/media/media_scene.h"
 #include "nimbus/media/particle_set.h"
 #include "nimbus/media/slice_plan.h"
+#include "nimbus/media/volume.h"
 
 namespace nimbus::media::ecs {
 
@@ -67,6 +68,12 @@ struct ParticleCloud {
     std::vector<float> densities;
 };
 
+// A volume of the medium in the entity's frame (volume.h); `origin` names its node in messages.
+struct VolumeComponent {
+    VolumeDesc desc;
+    std::string origin;
+};
+
 // An emitter riding on the entity's transform. `previousWorld` is the transform at the start of the
 // step, so particles born during a step spawn along the node's path, not in clumps.
 struct EmitterComponent {
@@ -77,6 +84,7 @@ struct EmitterComponent {
 // Resource: the medium as it will be drawn this frame (world space), and how.
 struct MediaFrame {
     ParticleSet particles;
+    std::vector<Volume> volumes;
     MediaRenderSettings settings;
 };
 
@@ -112,5 +120,7 @@ MediaRenderSettings readMediaSettings(nimbus::ecs::World& world);
 // Gathers the particle set the renderers draw from the ECS state (also what `sandbox reference`
 // renders, so both see exactly the same particles).
 void gatherParticles(nimbus::ecs::World& world, ParticleSet& out);
+// The same for the volumes, in node order, placed by their nodes' transforms.
+void gatherVolumes(nimbus::ecs::World& world, std::vector<Volume>& out);
 
 }  // namespace nimbus::media::ecs
