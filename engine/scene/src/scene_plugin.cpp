@@ -13,9 +13,11 @@ namespace {
 double endOfStep(const ecs::FrameInfo& info) { return static_cast<double>(info.index + 1) * info.timeStep; }
 
 void animate(ecs::World& world) {
-    const auto* asset = world.tryResource<SceneAsset>();
-    if (asset == nullptr || asset->scene == nullptr || asset->scene->animations.empty()) return;
-    const std::vector<glm::dmat4> pose = assets::computeWorldTransforms(*asset->scene, endOfStep(world.resource<ecs::FrameInfo>()));
+    auto* asset = world.tryResource<SceneAsset>();
+    if (asset == nullptr) return;
+    asset->time = endOfStep(world.resource<ecs::FrameInfo>());
+    if (asset->scene == nullptr || asset->scene->animations.empty()) return;
+    const std::vector<glm::dmat4> pose = assets::computeWorldTransforms(*asset->scene, asset->time);
     world.view<SceneNode, Transform>().each([&](ecs::Entity, const SceneNode& node, Transform& transform) {
         transform.world = pose.at(static_cast<std::size_t>(node.node));
     });
@@ -52,7 +54,7 @@ void spawnScene(ecs::World& world, std::shared_ptr<const assets::Scene> scene, d
         if (node.camera >= 0) world.emplace<CameraComponent>(e, CameraComponent{scene->cameras.at(static_cast<std::size_t>(node.camera))});
         if (node.light >= 0) world.emplace<LightComponent>(e, LightComponent{scene->lights.at(static_cast<std::size_t>(node.light))});
     }
-    world.insertResource<SceneAsset>(SceneAsset{scene});
+    world.insertResource<SceneAsset>(SceneAsset{scene, time});
     if (const auto* spawners = world.tryResource<SceneSpawners>()) {
         try {
             for (const auto& [name, spawn] : spawners->list) spawn(world, *scene);

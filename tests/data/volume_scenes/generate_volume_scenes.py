@@ -10,6 +10,8 @@ the tests need no Python). Rerun after editing a case.
   camera_inside     the camera inside a volume
   far_from_origin   a volume 1e5 m from the origin
   thin_slab         a slab 1e-3 m thick, seen edge-on and face-on
+  noise_value       an ellipsoid of fractal value noise over a ground, its edges faded, drifting
+  noise_sines       a box of Gardner's sums of sines with coverage, beside particles
 """
 import math
 import os
@@ -106,8 +108,38 @@ def thin_slab():
     return b
 
 
+def noise_value():
+    b = Builder()
+    b.environment(background=[0.35, 0.45, 0.65], ambient=[0.12, 0.14, 0.2])
+    ground(b)
+    v = volume("ellipsoid", (4.0, 2.0, 3.0), 3.0, albedo=0.95, g=0.5)
+    v["volume"]["noise"] = {"kind": "value", "octaves": 4, "frequency": 0.8, "seed": 11, "gain": 0.5, "coverage": 0.35,
+                            "falloff": 0.3, "velocity": [0.6, 0.0, 0.2]}
+    b.node("cumulus", translation=(0.0, 2.0, 0.0), ext=v)
+    b.sun("sun", direction=(0.45, -0.65, -0.6), intensity=3.0)
+    b.camera("main", eye=(3.5, 3.0, 6.5), target=(0.0, 1.8, 0.0), yfov=0.75)
+    return b
+
+
+def noise_sines():
+    import random
+    rng = random.Random(34)
+    b = Builder()
+    b.environment(background=[0.35, 0.45, 0.65], ambient=[0.12, 0.14, 0.2])
+    ground(b)
+    v = volume("box", (5.0, 1.5, 3.0), 1.5, albedo=0.9, g=0.3)
+    v["volume"]["noise"] = {"kind": "sines", "octaves": 4, "frequency": 0.35, "seed": 5, "coverage": 0.2, "falloff": 0.2}
+    b.node("haze", translation=(0.0, 1.0, 0.0), rotation=(0.0, math.sin(0.2), 0.0, math.cos(0.2)), ext=v)
+    p, r, d = ellipsoid_blob(rng, 80, (1.5, 2.4, 0.3), (1.0, 0.6, 0.8), (0.25, 0.5), falloff=0.5)
+    b.node("puff", ext={"medium": {"extinction": 3.0, "albedo": [0.85] * 3, "g": 0.4}, "particles": b.particles(p, r, d)})
+    b.sun("sun", direction=(0.3, -0.7, -0.65), intensity=3.0)
+    b.camera("main", eye=(3.0, 3.5, 7.0), target=(0.0, 1.2, 0.0), yfov=0.75)
+    return b
+
+
 SCENES = {"absorber_box": absorber_box, "lit_ellipsoid": lit_ellipsoid, "mixed": mixed, "dense_white_box": dense_white_box,
-          "camera_inside": camera_inside, "far_from_origin": far_from_origin, "thin_slab": thin_slab}
+          "camera_inside": camera_inside, "far_from_origin": far_from_origin, "thin_slab": thin_slab, "noise_value": noise_value,
+          "noise_sines": noise_sines}
 
 if __name__ == "__main__":
     for name in sys.argv[1:] or list(SCENES):

@@ -134,6 +134,26 @@ TEST(MediaScene, RefusesMalformedVolumes) {
     expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 1, 1}}, {"colour", 1}}}}, {"volume.colour", "unknown key"});
 }
 
+TEST(MediaScene, RefusesMalformedNoise) {
+    const nlohmann::json ok = {{"extinction", 1.0}};
+    auto noisy = [&](const nlohmann::json& noise) {
+        return nlohmann::json{{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 1, 1}}, {"noise", noise}}}};
+    };
+    expectRefusal(noisy({{"kind", "perlin"}}), {"volume.noise.kind", "perlin"});
+    expectRefusal(noisy({{"octaves", 2}}), {"volume.noise.kind", "required"});
+    expectRefusal(noisy({{"kind", "value"}, {"octaves", 0}}), {"volume.noise.octaves", "1..12"});
+    expectRefusal(noisy({{"kind", "value"}, {"octaves", 2.5}}), {"volume.noise.octaves", "integer"});
+    expectRefusal(noisy({{"kind", "value"}, {"frequency", 0}}), {"volume.noise.frequency", "> 0"});
+    expectRefusal(noisy({{"kind", "value"}, {"frequency", -1}}), {"volume.noise.frequency", "> 0"});
+    expectRefusal(noisy({{"kind", "sines"}, {"gain", 1.5}}), {"volume.noise.gain", "(0, 1]"});
+    expectRefusal(noisy({{"kind", "sines"}, {"coverage", 1.0}}), {"volume.noise.coverage", "[0, 1)"});
+    expectRefusal(noisy({{"kind", "sines"}, {"falloff", -0.1}}), {"volume.noise.falloff", "[0, 1]"});
+    expectRefusal(noisy({{"kind", "sines"}, {"seed", -1}}), {"volume.noise.seed"});
+    expectRefusal(noisy({{"kind", "sines"}, {"velocity", {1, 2}}}), {"volume.noise.velocity", "3 numbers"});
+    expectRefusal(noisy({{"kind", "sines"}, {"turbulence", 1}}), {"volume.noise.turbulence", "unknown key"});
+    expectRefusal(noisy(3), {"volume.noise", "object"});
+}
+
 // A volume is placed by its node's world transform and names its node for the renderers' messages.
 TEST(MediaScene, VolumesTakeTheirNodesTransform) {
     GltfFixture f;
@@ -151,6 +171,24 @@ TEST(MediaScene, VolumesTakeTheirNodesTransform) {
     EXPECT_TRUE(volumeContains(volumes[0], {1.0, 2.0, 5.9}));
     EXPECT_FALSE(volumeContains(volumes[0], {1.0, 2.0, 6.1}));
     EXPECT_NE(volumes[0].origin.find("bank.gltf: node \"bank\" (nodes[0])"), std::string::npos) << volumes[0].origin;
+    EXPECT_FALSE(volumes[0].noise.has_value());
+}
+
+TEST(MediaScene, NoiseDefaultsFollowItsKind) {
+    GltfFixture f;
+    const nlohmann::json noise = {{"kind", "sines"}, {"frequency", 0.5}, {"velocity", {1.0, 0.0, 0.5}}};
+    f.addNode({{"name", "haze"},
+               {"extensions", {{"NIMBUS_participating_media", {{"medium", {{"extinction", 0.5}}}, {"volume", {{"shape", "box"}, {"size", {4, 2, 6}}, {"noise", noise}}}}}}}});
+    const assets::Scene scene = assets::loadScene(f.write("haze"));
+    const MediaScene media = parseMediaScene(AssetsDocument(scene));
+    const NoiseField& n = *media.nodes.at(0).volume->noise;
+    EXPECT_EQ(n.kind, NoiseKind::Sines);
+    EXPECT_EQ(n.octaves, 4);
+    EXPECT_DOUBLE_EQ(n.gain, 0.707);  // Gardner's
+    EXPECT_DOUBLE_EQ(n.frequency, 0.5);
+    EXPECT_EQ(n.seed, 0u);
+    const std::vector<Volume> later = sceneVolumes(media, AssetsDocument(scene).worldTransforms(2.0), 2.0);
+    EXPECT_EQ(later.at(0).drift, glm::dvec3(2.0, 0.0, 1.0));
 }
 
 TEST(MediaScene, RefusesMalformedParticles) {

@@ -170,13 +170,15 @@ void gatherParticles(World& world, ParticleSet& out) {
 }
 
 void gatherVolumes(World& world, std::vector<Volume>& out) {
+    const auto* asset = world.tryResource<scene::SceneAsset>();
+    const double time = asset != nullptr ? asset->time : 0.0;  // the time the nodes are posed at: the noise drifts to it
     std::vector<std::pair<int, Entity>> entities;
     world.view<const VolumeComponent, const scene::SceneNode>().each(
         [&](Entity e, const VolumeComponent&, const scene::SceneNode& node) { entities.emplace_back(node.node, e); });
     std::sort(entities.begin(), entities.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& [node, e] : entities) {
         const VolumeComponent& v = world.get<VolumeComponent>(e);
-        out.push_back(makeVolume(v.desc, world.get<scene::Transform>(e).world, world.get<MediumComponent>(e).medium, v.origin));
+        out.push_back(makeVolume(v.desc, world.get<scene::Transform>(e).world, world.get<MediumComponent>(e).medium, v.origin, time));
     }
 }
 

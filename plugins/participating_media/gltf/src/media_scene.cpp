@@ -131,9 +131,56 @@ void parseParticles(const GltfDocument& scene, const nlohmann::json& object, con
     }
 }
 
+double readRange(const nlohmann::json& object, const char* key, double fallback, const Where& where, const std::string& field,
+                 bool (*ok)(double), std::string_view rule) {
+    if (!object.contains(key)) return fallback;
+    const double v = readNumber(object[key], where, field);
+    if (!ok(v)) where.fail(field, "must be " + std::string(rule) + ", not " + object[key].dump());
+    return v;
+}
+
+NoiseField parseNoise(const nlohmann::json& object, const Where& where) {
+    const std::string base = "volume.noise";
+    if (!object.is_object()) where.fail(base, "must be an object");
+    refuseUnknownKeys(object, {"kind", "octaves", "frequency", "seed", "gain", "coverage", "falloff", "velocity"}, where, base);
+    NoiseField n;
+    if (!object.contains("kind")) where.fail(base + ".kind", "is required: \"value\" or \"sines\"");
+    const nlohmann::json& kind = object["kind"];
+    if (kind == "value") n.kind = NoiseKind::Value;
+    else if (kind == "sines") n.kind = NoiseKind::Sines;
+    else where.fail(base + ".kind", "unknown kind " + kind.dump() + " (known: \"value\", \"sines\")");
+    n.gain = n.kind == NoiseKind::Sines ? 0.707 : 0.5;  // Gardner's 0.707 per octave; fractal noise's usual half
+    if (object.contains("octaves")) {
+        const nlohmann::json& v = object["octaves"];
+        if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > kMaxNoiseOctaves)
+            where.fail(base + ".octaves", "must be an integer in 1.." + std::to_string(kMaxNoiseOctaves) + ", not " + v.dump());
+        n.octaves = static_cast<int>(v.get<long long>());
+    }
+    if (object.contains("seed")) {
+        const nlohmann::json& v = object["seed"];
+        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > 0xffffffffLL)
+            where.fail(base + ".seed", "must be an integer in 0..4294967295, not " + v.dump());
+        n.seed = static_cast<std::uint32_t>(v.get<long long>());
+    }
+    n.frequency = readRange(object, "frequency", 1.0, where, base + ".frequency", [](double v) { return v > 0.0 && v <= 1e6; }, "> 0 (cycles per metre, at most 1e6)");
+    n.gain = readRange(object, "gain", n.gain, where, base + ".gain", [](double v) { return v > 0.0 && v <= 1.0; }, "in (0, 1]");
+    n.coverage = readRange(object, "coverage", 0.0, where, base + ".coverage", [](double v) { return v >= 0.0 && v < 1.0; }, "in [0, 1)");
+    n.falloff = readRange(object, "falloff", 0.0, where, base + ".falloff", [](double v) { return v >= 0.0 && v <= 1.0; }, "in [0, 1]");
+    if (object.contains("velocity")) {
+        const nlohmann::json& v = object["velocity"];
+        if (!v.is_array() || v.size() != 3) where.fail(base + ".velocity", "must be an array of 3 numbers (m/s)");
+        for (int c = 0; c < 3; ++c) {
+            const double x = readNumber(v[static_cast<std::size_t>(c)], where, base + ".velocity[" + std::to_string(c) + "]");
+            if (std::abs(x) > 1e4) where.fail(base + ".velocity[" + std::to_string(c) + "]", "must be in [-1e4, 1e4] m/s");
+            n.velocity[c] = x;
+        }
+    }
+    return n;
+}
+
 void parseVolume(const nlohmann::json& object, const Where& where, MediaNode& out) {
     if (!object.is_object()) where.fail("volume", "must be an object");
-    refuseUnknownKeys(object, {"shape", "size"}, where, "volume");
+    refuseUnknownKeys(object, {"shape", "size", "noise"}, where, "volume");
     if (!object.contains("shape")) where.fail("volume.shape", "is required: \"box\" or \"ellipsoid\"");
     const nlohmann::json& shape = object["shape"];
     VolumeDesc desc;
@@ -149,6 +196,7 @@ void parseVolume(const nlohmann::json& object, const Where& where, MediaNode& ou
         if (!(v > 0.0) || v > 1e12) where.fail(element, "must be > 0 (and at most 1e12 m), not " + size[static_cast<std::size_t>(c)].dump());
         desc.size[c] = v;
     }
+    if (object.contains("noise")) desc.noise = parseNoise(object["noise"], where);
     out.volume = desc;
 }
 
@@ -220,13 +268,13 @@ ParticleSet staticParticles(const MediaScene& media, const std::vector<glm::dmat
     return set;
 }
 
-std::vector<Volume> sceneVolumes(const MediaScene& media, const std::vector<glm::dmat4>& world) {
+std::vector<Volume> sceneVolumes(const MediaScene& media, const std::vector<glm::dmat4>& world, double time) {
     std::vector<Volume> out;
     for (const MediaNode& n : media.nodes) {
         if (!n.volume) continue;
         const glm::dmat4 m = n.node >= 0 && static_cast<std::size_t>(n.node) < world.size() ? world[static_cast<std::size_t>(n.node)]
                                                                                             : glm::dmat4(1.0);
-        out.push_back(makeVolume(*n.volume, m, n.medium, n.origin));
+        out.push_back(makeVolume(*n.volume, m, n.medium, n.origin, time));
     }
     return out;
 }

@@ -15,10 +15,7 @@ LightTransport::LightTransport(const std::vector<assets::ResolvedLight>& lights,
 
 double LightTransport::opticalDepthToLight(const glm::dvec3& x, const glm::dvec3& toLight, double distance) const {
     double tau = 0.0;
-    for (const Volume& v : volumes_) {
-        const VolumeChord chord = volumeChord(v, x, toLight);
-        if (chord.hit()) tau += v.sigma() * std::max(0.0, std::min(chord.exit, distance) - std::max(chord.enter, 0.0));
-    }
+    for (const Volume& v : volumes_) tau += volumeOpticalDepth(v, x, toLight, 0.0, distance);
     if (tau >= kOpaqueDepth) return tau;
     bvh_.forEachOnSegment(x, toLight, 0.0, distance, [&](std::uint32_t i) {
         const double radius = particles_.radius[i];

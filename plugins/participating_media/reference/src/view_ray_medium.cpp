@@ -17,6 +17,10 @@ void ViewRayMedium::build(const ParticleBvh& bvh, const ParticleSet& particles, 
     activeErfStart_.clear();
     clusters_.clear();
     candidates_.clear();
+    tables_.clear();
+    volumes_ = &volumes;
+    origin_ = origin;
+    dir_ = dir;
     totalOpticalDepth_ = 0.0;
     collect(bvh, particles, origin, dir, end);
     collectVolumes(volumes, origin, dir, end);
@@ -68,14 +72,79 @@ void ViewRayMedium::collectVolumes(const std::vector<Volume>& volumes, const glm
         p.exit = std::min(end, chord.exit);
         p.sigma = p.peak = volumes[v].sigma();
         if (!chord.hit() || !(p.exit > p.enter) || !(p.sigma > 0.0)) continue;
+        if (volumes[v].noise) {
+            tables_.push_back(tabulateOpticalDepth(volumes[v], origin, dir, p.enter, p.exit));
+            p.table = static_cast<std::int32_t>(tables_.size() - 1);
+            totalOpticalDepth_ += tables_.back().tau.back();
+        } else {
+            totalOpticalDepth_ += p.sigma * (p.exit - p.enter);
+        }
         rayParticles_.push_back(p);
-        totalOpticalDepth_ += p.sigma * (p.exit - p.enter);
     }
 }
 
-double ViewRayMedium::depthInPiece(const RayParticle& p, double pieceStart, double erfStart, double b) {
+double ViewRayMedium::depthInPiece(const RayParticle& p, double pieceStart, double erfStart, double b) const {
+    if (p.table >= 0) return tables_[static_cast<std::size_t>(p.table)].at(b) - erfStart;
     if (p.volume) return p.sigma * (b - pieceStart);
     return p.scale * (std::erf(p.sqrtK * (b - p.tClosest)) - erfStart);
+}
+
+double ViewRayMedium::extinctionOf(const RayParticle& p, double t) const {
+    if (p.table >= 0) return volumeExtinction((*volumes_)[p.index], origin_ + t * dir_);
+    if (p.volume) return p.peak;
+    const double x = p.sqrtK * (t - p.tClosest);
+    return p.peak * std::exp(-x * x);
+}
+
+namespace {
+
+// Adaptive Simpson on [a, b] (fa, fm, fb at a, its middle, b; `whole` Simpson's rule there),
+// appending each accepted interval's middle and end as nodes of `table`.
+template <typename F>
+void refineTable(const F& sigma, double a, double b, double fa, double fm, double fb, double whole, double tolerance, int depth,
+                 DepthTable& table) {
+    const double m = 0.5 * (a + b);
+    const double flm = sigma(0.5 * (a + m)), frm = sigma(0.5 * (m + b));
+    const double left = (m - a) / 6.0 * (fa + 4.0 * flm + fm), right = (b - m) / 6.0 * (fm + 4.0 * frm + fb);
+    if (depth > 0 && std::abs(left + right - whole) > 15.0 * (tolerance * std::abs(left + right) + 1e-14)) {
+        refineTable(sigma, a, m, fa, flm, fm, left, tolerance, depth - 1, table);
+        refineTable(sigma, m, b, fm, frm, fb, right, tolerance, depth - 1, table);
+        return;
+    }
+    const double before = table.tau.back();
+    table.t.insert(table.t.end(), {m, b});
+    table.tau.insert(table.tau.end(), {before + left, before + left + right});
+    table.sigma.insert(table.sigma.end(), {fm, fb});
+}
+
+}  // namespace
+
+DepthTable tabulateOpticalDepth(const Volume& volume, const glm::dvec3& origin, const glm::dvec3& dir, double a, double b, double tolerance) {
+    DepthTable table;
+    const auto sigma = [&](double t) { return volumeExtinction(volume, origin + t * dir); };
+    table.t.push_back(a);
+    table.tau.push_back(0.0);
+    table.sigma.push_back(sigma(a));
+    const int intervals = volumeQuadratureIntervals(volume, dir, b - a);
+    const double h = (b - a) / intervals;
+    for (int i = 0; i < intervals; ++i) {
+        const double lo = a + i * h, hi = i + 1 == intervals ? b : lo + h, m = 0.5 * (lo + hi);
+        const double fa = table.sigma.back(), fm = sigma(m), fb = sigma(hi);
+        refineTable(sigma, lo, hi, fa, fm, fb, (hi - lo) / 6.0 * (fa + 4.0 * fm + fb), tolerance, 24, table);
+    }
+    return table;
+}
+
+double DepthTable::at(double x) const {
+    if (!(x > t.front())) return 0.0;
+    if (!(x < t.back())) return tau.back();
+    const auto i = static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), x) - t.begin()) - 1;
+    const double h = t[i + 1] - t[i];
+    if (!(h > 0.0)) return tau[i];
+    const double s = (x - t[i]) / h, s2 = s * s, s3 = s2 * s;
+    const double value = (2.0 * s3 - 3.0 * s2 + 1.0) * tau[i] + (s3 - 2.0 * s2 + s) * h * sigma[i] + (-2.0 * s3 + 3.0 * s2) * tau[i + 1] +
+                         (s3 - s2) * h * sigma[i + 1];
+    return std::clamp(value, tau[i], tau[i + 1]);
 }
 
 // Pieces between consecutive chord ends, and which particles are active in each (CSR). A particle
@@ -114,6 +183,18 @@ std::vector<double> ViewRayMedium::pieceDepths() {
     std::vector<std::uint32_t> fill(activeStart_.begin(), activeStart_.end() - 1);
     for (std::size_t r = 0; r < rayParticles_.size(); ++r) {
         const RayParticle& p = rayParticles_[r];
+        if (p.table >= 0) {  // tabulated: differences of the table's τ
+            const DepthTable& table = tables_[static_cast<std::size_t>(p.table)];
+            double previous = table.at(breaks_[span[2 * r]]);
+            for (std::uint32_t k = span[2 * r]; k < span[2 * r + 1]; ++k) {
+                const double next = table.at(breaks_[k + 1]);
+                activeErfStart_[fill[k]] = previous;
+                active_[fill[k]++] = static_cast<std::uint32_t>(r);
+                pieceDepth[k] += next - previous;
+                previous = next;
+            }
+            continue;
+        }
         if (p.volume) {  // constant: σ times each piece's length
             for (std::uint32_t k = span[2 * r]; k < span[2 * r + 1]; ++k) {
                 activeErfStart_[fill[k]] = 0.0;
@@ -157,12 +238,7 @@ double ViewRayMedium::extinctionAt(std::uint32_t piece, double t, std::vector<do
     if (terms) terms->clear();
     double sum = 0.0;
     for (const std::uint32_t* a = activeBegin(piece); a != activeEnd(piece); ++a) {
-        const RayParticle& p = rayParticles_[*a];
-        double term = p.peak;
-        if (!p.volume) {
-            const double x = p.sqrtK * (t - p.tClosest);
-            term = p.peak * std::exp(-x * x);
-        }
+        const double term = extinctionOf(rayParticles_[*a], t);
         sum += term;
         if (terms) terms->push_back(term);
     }
@@ -211,12 +287,7 @@ RaySample ViewRayMedium::locate(std::uint32_t cluster, double s) const {
         for (const std::uint32_t* a = begin; a != end; ++a) {
             const RayParticle& p = rayParticles_[*a];
             f += depthInPiece(p, lo0, erfStart[a - begin], t);
-            if (p.volume) {
-                slope += p.peak;
-            } else {
-                const double x = p.sqrtK * (t - p.tClosest);
-                slope += p.peak * std::exp(-x * x);
-            }
+            slope += extinctionOf(p, t);
         }
         if (f == 0.0) break;
         if (f < 0.0) lo = t; else hi = t;

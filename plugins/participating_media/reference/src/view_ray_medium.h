@@ -5,8 +5,10 @@
 // ray has the optical depth since the cluster start reached s?" (Newton on the closed form), which
 // is how the quadrature places its samples (reference_renderer.h, "Quadrature").
 //
-// Volumes (volume.h) join the particles as pieces of constant extinction: their optical depth is
-// σ times the length, and everything below treats both alike.
+// Volumes (volume.h) join the particles as pieces: a constant one's optical depth is σ times the
+// length; a noise volume's is tabulated along its chord by adaptive Simpson quadrature (nodes where
+// the estimate settled to 1e-7 of the local depth) and read between nodes by the cubic Hermite
+// interpolant of τ with slopes σ_t, which the nodes hold exactly. Everything below treats all alike.
 //
 // Does not: evaluate lighting; own the particles or volumes (indices into their lists).
 #include <cstdint>
@@ -31,7 +33,17 @@ struct RayParticle {
     double sqrtK = 0.0;              // √(4.5)/R
     double peak = 0.0;               // σ exp(-k b²): extinction at the closest point
     double scale = 0.0;              // peak · √π / (2√k)
+    std::int32_t table = -1;         // a noise volume's depth table (ViewRayMedium), else −1
 };
+
+// A noise volume's optical depth along one ray: nodes t, τ from the chord's start, and σ_t there.
+struct DepthTable {
+    std::vector<double> t, tau, sigma;
+    double at(double x) const;  // τ at x, cubic Hermite between nodes, clamped to the chord
+};
+// Tabulates `volume` (which has noise) on origin + t·dir over [a, b].
+DepthTable tabulateOpticalDepth(const Volume& volume, const glm::dvec3& origin, const glm::dvec3& dir, double a, double b,
+                                double tolerance = 1e-7);
 
 struct RayCluster {
     std::uint32_t firstPiece = 0, endPiece = 0;  // pieces [first, end)
@@ -76,8 +88,11 @@ public:
 private:
     void collect(const ParticleBvh& bvh, const ParticleSet& particles, const glm::dvec3& origin, const glm::dvec3& dir, double end);
     void collectVolumes(const std::vector<Volume>& volumes, const glm::dvec3& origin, const glm::dvec3& dir, double end);
-    // A ray particle's optical depth over [a, b] inside one of its pieces, whose erf at the piece start is `erfStart`.
-    static double depthInPiece(const RayParticle& p, double pieceStart, double erfStart, double b);
+    // A ray particle's optical depth over [a, b] inside one of its pieces, whose erf (a table's τ)
+    // at the piece start is `erfStart`.
+    double depthInPiece(const RayParticle& p, double pieceStart, double erfStart, double b) const;
+    // The extinction of ray particle p at ray parameter t.
+    double extinctionOf(const RayParticle& p, double t) const;
     void buildPieces();
     std::vector<double> pieceDepths();
     void buildClusters(const std::vector<double>& pieceDepth);
@@ -89,6 +104,9 @@ private:
     std::vector<double> activeErfStart_;    // per CSR entry: erf(√k (piece start - tClosest))
     std::vector<RayCluster> clusters_;
     std::vector<std::uint32_t> candidates_;  // the BVH's particles, then each ray particle's first and end piece
+    std::vector<DepthTable> tables_;         // the noise volumes' on this ray
+    const std::vector<Volume>* volumes_ = nullptr;
+    glm::dvec3 origin_{0.0}, dir_{0.0};
     double totalOpticalDepth_ = 0.0;
 };
 

@@ -68,7 +68,8 @@ void gather(ecs::World& world) {
     state.volumes.clear();
     for (const auto& [index, entity] : inMediaOrder<VolumeNode>(world)) {
         const media::MediaNode& node = state.scene.nodes[index];
-        state.volumes.push_back(media::makeVolume(*node.volume, world.get<WorldTransform>(entity)->matrix, node.medium, node.origin));
+        state.volumes.push_back(media::makeVolume(*node.volume, world.get<WorldTransform>(entity)->matrix, node.medium, node.origin,
+                                                  world.singleton<SceneRequest>().time));
     }
     if (state.empty()) return;
     if (!state.renderer) state.renderer = std::make_unique<media::MediaRenderer>();

@@ -96,7 +96,15 @@ TEST_F(MediaGpuLayout, ScatteringMatchesGpuScattering) {
 
 TEST_F(MediaGpuLayout, VolumesMatchGpuVolume) {
     const gpu::Program program = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/volume_slices.frag"});
-    expectMembers(program.id(), GL_BUFFER_VARIABLE, "volumes[0].", {{"toUnit", offsetof(GpuVolume, toUnit)}, {"medium", offsetof(GpuVolume, medium)}});
+    expectMembers(program.id(), GL_BUFFER_VARIABLE, "volumes[0].",
+                  {{"toUnit", offsetof(GpuVolume, toUnit)},
+                   {"medium", offsetof(GpuVolume, medium)},
+                   {"albedoG", offsetof(GpuVolume, albedoG)},
+                   {"emission", offsetof(GpuVolume, emission)},
+                   {"noise", offsetof(GpuVolume, noise)},
+                   {"noiseShape", offsetof(GpuVolume, noiseShape)},
+                   {"noiseScale", offsetof(GpuVolume, noiseScale)},
+                   {"noiseOffset", offsetof(GpuVolume, noiseOffset)}});
     EXPECT_EQ(topLevelArrayStride(program.id(), "volumes[0].toUnit"), static_cast<GLint>(sizeof(GpuVolume)));
     EXPECT_EQ(storageBinding(program.id(), "MediaVolumes"), static_cast<GLint>(kVolumesBinding));
 }

@@ -38,6 +38,7 @@ struct LightComponent {
 // Resource: the loaded scene every system reads (shared so a reload can swap it atomically).
 struct SceneAsset {
     std::shared_ptr<const assets::Scene> scene;
+    double time = 0.0;  // seconds the nodes are posed at: the spawn time, then each update's end
 };
 
 // Resource: what plugins add to a spawned scene. spawnScene() calls each after creating the node

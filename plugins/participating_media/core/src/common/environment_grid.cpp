@@ -322,9 +322,9 @@ MediumGrid voxelizeMedium(const ParticleSet& particles, const std::vector<Volume
         for (int z = 0; z < m.size.z; ++z)
             for (int y = 0; y < m.size.y; ++y)
                 for (int x = 0; x < m.size.x; ++x) {
-                    if (!volumeContains(vol, m.min + (glm::dvec3(x, y, z) + 0.5) * m.voxel)) continue;
+                    const float sigma = static_cast<float>(volumeExtinction(vol, m.min + (glm::dvec3(x, y, z) + 0.5) * m.voxel));
+                    if (!(sigma > 0.0f)) continue;
                     const std::size_t v = m.index(x, y, z);
-                    const float sigma = static_cast<float>(vol.sigma());
                     m.sigma[v] += sigma;
                     m.scattering[v] += sigma * vol.medium.albedo;
                     m.sigmaG[v] += sigma * vol.medium.g;

@@ -45,7 +45,7 @@ struct EnvironmentLighting {
 
 // The medium on a grid of `voxelsAlongLongest` voxels along its longest side plus one of padding
 // around it: the particles' kernels sampled and scaled so each keeps its optical volume (small ones
-// land on their nearest voxel), and the volumes' constant medium where they contain a centre.
+// land on their nearest voxel), and each volume's extinction (its noise's included) at the centres.
 MediumGrid voxelizeMedium(const ParticleSet& particles, const std::vector<Volume>& volumes, int voxelsAlongLongest);
 
 // The grid for `medium`, its solve started from `solve.coarser` where given, else from zero.

@@ -11,7 +11,16 @@ GpuVolume packVolume(const Volume& volume, const glm::dvec3& origin) {
     const glm::dmat4 toUnit = glm::scale(glm::dmat4(1.0), 2.0 / volume.size) * volume.toLocal * glm::translate(glm::dmat4(1.0), origin);
     GpuVolume out;
     out.toUnit = glm::mat4(toUnit);
-    out.medium = glm::vec4(static_cast<float>(volume.sigma()), volume.shape == VolumeShape::Ellipsoid ? 1.0f : 0.0f, 0.0f, 0.0f);
+    out.medium = glm::vec4(static_cast<float>(volume.sigma()), volume.shape == VolumeShape::Ellipsoid ? 1.0f : 0.0f, volume.noise ? 1.0f : 0.0f, 0.0f);
+    out.albedoG = glm::vec4(volume.medium.albedo, volume.medium.g);
+    out.emission = glm::vec4(volume.medium.emission, 0.0f);
+    if (volume.noise) {
+        const NoiseParams& n = volume.noiseParams;
+        out.noise = glm::uvec4(n.kind, n.octaves, n.seed, 0u);
+        out.noiseShape = glm::vec4(n.gain, n.invAmplitude, n.coverage, n.invOneMinusCoverage);
+        out.noiseScale = glm::vec4(glm::vec3(0.5 * volume.size * volume.noise->frequency), n.invFalloff);
+        out.noiseOffset = glm::vec4(glm::vec3(-volume.drift * volume.noise->frequency), 0.0f);
+    }
     return out;
 }
 

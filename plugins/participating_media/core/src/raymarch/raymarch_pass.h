@@ -10,6 +10,7 @@
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/media/graph_frame.h"
+#include "raymarch/raymarch_grid.h"
 #include "raymarch/voxel_grid.h"
 
 namespace nimbus::media {
@@ -17,16 +18,13 @@ namespace nimbus::media {
 class RaymarchPass {
 public:
     RaymarchPass();
-    // Uploads `grid` (whose corner is world space; the frame origin is the camera's) and adds the pass.
-    gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const VoxelGrid& grid, int maxSteps,
+    // Marches `textures`, which hold `grid` (whose corner is world space; the frame origin is the camera's).
+    gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const VoxelGrid& grid, const RaymarchGrid& textures, int maxSteps,
                             const MediaTarget& target);
 
 private:
-    void upload(const VoxelGrid& grid);
-
     gpu::FullscreenPass pass_;
     std::unique_ptr<gpu::FullscreenPass> multiple_;  // MEDIA_MULTIPLE, made when a frame first needs it
-    gpu::Texture scattering_, emission_;
 };
 
 }  // namespace nimbus::media

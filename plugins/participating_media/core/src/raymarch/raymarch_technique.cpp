@@ -1,7 +1,10 @@
 #include "raymarch/raymarch_technique.h"
 
+#include <algorithm>
+
 #include "common/shared_frame.h"
 #include "nimbus/base/settings.h"
+#include "raymarch/raymarch_noise_pass.h"
 #include "raymarch/raymarch_pass.h"
 #include "raymarch/voxel_grid.h"
 #include "slices/particle_slices.h"
@@ -23,23 +26,42 @@ const SettingField<RaymarchSettings> kRaymarchFields[] = {
 
 class RaymarchTechnique final : public MediaTechnique {
 public:
+    // The grid is this frame's medium, voxelised before the light slices (which read its noise).
+    void plan(TechniqueFrame& frame, const GraphFrame&) override {
+        const RaymarchSettings own = techniqueSettings<RaymarchSettings>(*frame.settings);
+        grid_ = voxelize(*frame.particles, *frame.volumes, own.voxels);
+        frame.report("voxels_x", static_cast<long long>(grid_.size.x));
+        frame.report("voxels_y", static_cast<long long>(grid_.size.y));
+        frame.report("voxels_z", static_cast<long long>(grid_.size.z));
+    }
+
+    void upload(TechniqueFrame&, const GraphFrame&) override { textures_.upload(grid_); }
+
     void addLightSlices(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) override {
-        slices_.add(graph, context, *frame.particles, *frame.shared, frame.settings->sliceDeposit);
+        const std::vector<Volume>& volumes = *frame.volumes;
+        const bool noise = std::any_of(volumes.begin(), volumes.end(), [](const Volume& v) { return v.noise.has_value(); });
+        NoiseGridInput grid;
+        if (noise) {
+            if (!noisePass_) noisePass_ = std::make_unique<RaymarchNoisePass>();
+            noisePass_->add(graph, textures_, grid_, volumes, *frame.shared->volumes, context.host.camera.origin);
+            grid = {&textures_.noise(), glm::vec3(grid_.min - context.host.camera.origin), glm::vec3(glm::dvec3(grid_.size) * grid_.voxel),
+                    static_cast<float>(grid_.voxel.x)};
+        }
+        slices_.add(graph, context, *frame.particles, *frame.shared, frame.settings->sliceDeposit, noise ? &grid : nullptr);
     }
 
     gpu::ResourceHandle addMedia(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) override {
         const RaymarchSettings own = techniqueSettings<RaymarchSettings>(*frame.settings);
         if (!pass_) pass_ = std::make_unique<RaymarchPass>();
-        const VoxelGrid grid = voxelize(*frame.particles, *frame.volumes, own.voxels);
-        frame.report("voxels_x", static_cast<long long>(grid.size.x));
-        frame.report("voxels_y", static_cast<long long>(grid.size.y));
-        frame.report("voxels_z", static_cast<long long>(grid.size.z));
         const int steps = own.raymarchSteps > 0 ? own.raymarchSteps : kDefaultRaymarchSteps;
-        return pass_->add(graph, context, grid, steps, frame.shared->target);
+        return pass_->add(graph, context, grid_, textures_, steps, frame.shared->target);
     }
 
 private:
+    VoxelGrid grid_;
+    RaymarchGrid textures_;
     ParticleSlices slices_;
+    std::unique_ptr<RaymarchNoisePass> noisePass_;
     std::unique_ptr<RaymarchPass> pass_;
 };
 
@@ -47,7 +69,7 @@ private:
 
 TechniqueEntry raymarchTechnique() {
     return {.name = "raymarch",
-            .help = "the particles and volumes voxelised each frame and the grid ray-marched per pixel, lit through the light slices",
+            .help = "the particles and volumes voxelised each frame (noise volumes on the GPU) and the grid ray-marched per pixel, lit through the light slices",
             .sliceDeposit = true,
             .volumes = true,
             .settings = specsOf(kRaymarchFields),

@@ -114,7 +114,8 @@ VoxelGrid voxelize(const ParticleSet& particles, const std::vector<Volume>& volu
     grid.rayleigh = std::all_of(particles.phase.begin(), particles.phase.end(), [](PhaseFunction f) { return f == PhaseFunction::Rayleigh; }) &&
                     std::all_of(volumes.begin(), volumes.end(), [](const Volume& v) { return v.medium.phase == PhaseFunction::Rayleigh; });
     for (std::size_t i = 0; i < particles.size(); ++i) splat(particles, i, grid);
-    for (const Volume& v : volumes) fillVolume(v, grid);
+    for (const Volume& v : volumes)
+        if (!v.noise) fillVolume(v, grid);  // noise volumes are evaluated on the GPU (raymarch_noise_pass.h)
     return grid;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // `raymarch` mode's grid (seed 002): the medium sampled at voxel centres, σ_t with the σ-weighted
 // albedo, emission and phase asymmetry, for the GPU to interpolate trilinearly. Particles add their
-// kernels at the centres; a volume adds its σ times the share of the voxel it covers, so its faces
-// land between voxel centres where they lie rather than on the nearest one.
+// kernels at the centres; a constant volume adds its σ times the share of the voxel it covers, so
+// its faces land between voxel centres where they lie rather than on the nearest one. Noise volumes
+// set the grid's bounds but are left to the GPU (raymarch_noise_pass.h).
 //
 // Does not: filter particles (a voxel holds the kernel sums at its centre) or keep more than one
 // phase function (mixed media march with Henyey–Greenstein).

@@ -14,7 +14,7 @@ ParticleSlices::ParticleSlices() = default;
 ParticleSlices::~ParticleSlices() = default;
 
 void ParticleSlices::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleSet& particles, const SharedFrame& shared,
-                         SliceDeposit deposit) {
+                         SliceDeposit deposit, const NoiseGridInput* noise) {
     const std::vector<SliceView>& views = shared.sliceViews;
     if (views.empty()) return;
     // Deposit pays per slab a particle reaches; around a lamp inside the medium every particle
@@ -39,7 +39,7 @@ void ParticleSlices::add(gpu::FrameGraph& graph, GraphFrame& context, const Part
     }
     if (shared.volumeCount > 0) {
         if (!volumes_) volumes_ = std::make_unique<VolumeSlicePass>();
-        context.slices = volumes_->add(graph, context.slices, views, shared.sliceResolution, *shared.volumes);
+        context.slices = volumes_->add(graph, context.slices, views, shared.sliceResolution, *shared.volumes, noise);
     }
 }
 

@@ -10,21 +10,22 @@
 #include "nimbus/media/media_settings.h"
 #include "nimbus/media/particle_set.h"
 #include "common/shared_frame.h"
+#include "slices/volume_slice_pass.h"
 
 namespace nimbus::media {
 
 class LightSlicePass;
 class LightSliceDepositPass;
 class LightSlicePrefixPass;
-class VolumeSlicePass;
 
 class ParticleSlices {
 public:
     ParticleSlices();
     ~ParticleSlices();
     // The shared slice views' slices into context.slices; nothing where there are no views.
+    // `noise`: the noise volumes' grid (volume_slice_pass.h), when the frame has noise volumes.
     void add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleSet& particles, const SharedFrame& shared,
-             SliceDeposit deposit);
+             SliceDeposit deposit, const NoiseGridInput* noise = nullptr);
 
 private:
     std::unique_ptr<LightSlicePass> plain_;  // each made when first needed

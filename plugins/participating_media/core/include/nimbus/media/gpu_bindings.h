@@ -34,6 +34,11 @@ inline constexpr GLuint kSeamMaskUnit = 9;        // MEDIA_SEAM_MASK_UNIT
 inline constexpr GLuint kVoxelScatteringUnit = 5; // MEDIA_VOXEL_SCATTERING_UNIT (raymarch: never with the impostors)
 inline constexpr GLuint kVoxelEmissionUnit = 7;   // MEDIA_VOXEL_EMISSION_UNIT
 inline constexpr GLuint kEnvironmentUnit = 10;    // MEDIA_ENVIRONMENT_UNIT (multiple scattering)
+inline constexpr GLuint kNoiseGridUnit = 11;      // MEDIA_NOISE_GRID_UNIT (volume slices: the noise volumes' σ_t on a grid)
+// Image units.
+inline constexpr GLuint kGridScatteringImage = 0;  // raymarch_noise.comp: the raymarch grid's rgb σ_s, a σ_t
+inline constexpr GLuint kGridEmissionImage = 1;    // its rgb σ_t·emission, a σ_t·g
+inline constexpr GLuint kNoiseGridImage = 2;       // the noise volumes' σ_t alone
 
 // Uniform blocks (0..2 are gpu/frame_layout.h's).
 inline constexpr GLuint kScatteringBinding = 4;   // MEDIA_SCATTERING_BINDING (multiple scattering)
@@ -65,8 +70,14 @@ struct alignas(16) GpuScattering {
 
 // One volume of the MediaVolumes storage buffer (shaders/media/common/volumes.glsl, volume.h).
 struct alignas(16) GpuVolume {
-    glm::mat4 toUnit{1.0f};    // frame-relative world → the node's frame scaled to the unit cube [−1, 1]³ or unit sphere
-    glm::vec4 medium{0.0f};    // x σ_t (1/m), y shape (0 box, 1 ellipsoid)
+    glm::mat4 toUnit{1.0f};     // frame-relative world → the node's frame scaled to the unit cube [−1, 1]³ or unit sphere
+    glm::vec4 medium{0.0f};     // x σ_t (1/m), y shape (0 box, 1 ellipsoid), z 1 with noise
+    glm::vec4 albedoG{0.0f};    // rgb albedo, w g
+    glm::vec4 emission{0.0f};   // rgb emitted radiance per unit optical depth
+    glm::uvec4 noise{0u};       // NoiseParams kind, octaves, seed
+    glm::vec4 noiseShape{0.0f}; // NoiseParams gain, invAmplitude, coverage, invOneMinusCoverage
+    glm::vec4 noiseScale{0.0f}; // xyz unit frame → noise space (half size × frequency), w NoiseParams invFalloff
+    glm::vec4 noiseOffset{0.0f};// xyz noise space offset (−drift × frequency)
 };
 
 }  // namespace nimbus::media

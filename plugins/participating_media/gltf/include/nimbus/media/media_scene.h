@@ -67,8 +67,8 @@ void appendCloudParticles(ParticleSet& out, const Medium& medium, const std::vec
 bool hasUniformScale(const glm::dmat4& world);
 
 // The volumes of the scene placed by `world` (a node's world transform, per node index), each
-// naming its node in Volume::origin.
-std::vector<Volume> sceneVolumes(const MediaScene& media, const std::vector<glm::dmat4>& world);
+// naming its node in Volume::origin, its noise drifted to `time`.
+std::vector<Volume> sceneVolumes(const MediaScene& media, const std::vector<glm::dmat4>& world, double time = 0.0);
 
 // Every particle of the scene at `timeSeconds` for hosts without the ECS: the static clouds posed at
 // that time, then every emitter simulated from 0 (simulateEmittersTo), in node order — exactly the
