@@ -134,6 +134,32 @@ TEST(MediaScene, RefusesMalformedVolumes) {
     expectRefusal({{"medium", ok}, {"volume", {{"shape", "box"}, {"size", {1, 1, 1}}, {"colour", 1}}}}, {"volume.colour", "unknown key"});
 }
 
+TEST(MediaScene, AGeneratorMakesTheNodesCloud) {
+    GltfFixture f;
+    f.addNode({{"name", "cumulus"},
+               {"extensions", {{"NIMBUS_participating_media", {{"medium", {{"extinction", 0.5}}},
+                                                              {"generator", {{"kind", "ellipsoids"}, {"seed", 9}, {"particles", 300}, {"size", {6, 3, 4}}}}}}}}});
+    const assets::Scene scene = assets::loadScene(f.write("generated"));
+    const MediaScene media = parseMediaScene(AssetsDocument(scene));
+    EXPECT_EQ(media.nodes.at(0).localPositions.size(), 300u);
+    EXPECT_EQ(staticParticles(media, {glm::dmat4(1.0)}).size(), 300u);
+}
+
+TEST(MediaScene, RefusesMalformedGenerators) {
+    const nlohmann::json ok = {{"extinction", 1.0}};
+    auto generator = [&](const nlohmann::json& g) { return nlohmann::json{{"medium", ok}, {"generator", g}}; };
+    expectRefusal(generator({{"size", {1, 1, 1}}}), {"generator.kind", "required"});
+    expectRefusal(generator({{"kind", "fractal"}, {"size", {1, 1, 1}}}), {"generator.kind", "fractal"});
+    expectRefusal(generator({{"kind", "ellipsoids"}}), {"generator.size", "required"});
+    expectRefusal(generator({{"kind", "ellipsoids"}, {"size", {1, 0, 1}}}), {"generator.size[1]", "> 0"});
+    expectRefusal(generator({{"kind", "ellipsoids"}, {"size", {1, 1, 1}}, {"particles", 0}}), {"generator.particles", "1.."});
+    expectRefusal(generator({{"kind", "ellipsoids"}, {"size", {1, 1, 1}}, {"particles", 1 << 21}}), {"generator.particles"});
+    expectRefusal(generator({{"kind", "ellipsoids"}, {"size", {1, 1, 1}}, {"radius", {0.5, 0.2}}}), {"generator.radius", "min <= max"});
+    expectRefusal(generator({{"kind", "diamond-square"}, {"size", {1, 1, 1}}, {"roughness", 1.0}}), {"generator.roughness", "(0, 1)"});
+    expectRefusal(generator({{"kind", "diamond-square"}, {"size", {1, 1, 1}}, {"coverage", -0.5}}), {"generator.coverage", "[0, 1)"});
+    expectRefusal(generator({{"kind", "diamond-square"}, {"size", {1, 1, 1}}, {"height", 2}}), {"generator.height", "unknown key"});
+}
+
 TEST(MediaScene, RefusesMalformedNoise) {
     const nlohmann::json ok = {{"extinction", 1.0}};
     auto noisy = [&](const nlohmann::json& noise) {

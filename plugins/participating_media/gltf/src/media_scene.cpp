@@ -2,6 +2,8 @@
 
 #include "nimbus/media/emitter_scene.h"
 
+#include "nimbus/media/cloud_generator.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string_view>
@@ -200,6 +202,51 @@ void parseVolume(const nlohmann::json& object, const Where& where, MediaNode& ou
     out.volume = desc;
 }
 
+// A `generator` object: its particles, made now (they are static, like `particles`).
+void parseGenerator(const nlohmann::json& object, const Where& where, MediaNode& out) {
+    const std::string base = "generator";
+    if (!object.is_object()) where.fail(base, "must be an object");
+    refuseUnknownKeys(object, {"kind", "seed", "particles", "size", "radius", "ellipsoids", "roughness", "coverage"}, where, base);
+    CloudGenerator g;
+    if (!object.contains("kind")) where.fail(base + ".kind", "is required: \"ellipsoids\" or \"diamond-square\"");
+    const nlohmann::json& kind = object["kind"];
+    if (kind == "ellipsoids") g.kind = CloudGeneratorKind::Ellipsoids;
+    else if (kind == "diamond-square") g.kind = CloudGeneratorKind::DiamondSquare;
+    else where.fail(base + ".kind", "unknown kind " + kind.dump() + " (known: \"ellipsoids\", \"diamond-square\")");
+    auto integer = [&](const char* key, long long lo, long long hi, long long fallback) {
+        if (!object.contains(key)) return fallback;
+        const nlohmann::json& v = object[key];
+        if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
+            where.fail(base + "." + key, "must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi) + ", not " + v.dump());
+        return v.get<long long>();
+    };
+    g.seed = static_cast<std::uint32_t>(integer("seed", 0, 0xffffffffLL, 0));
+    g.particles = static_cast<int>(integer("particles", 1, kMaxGeneratedParticles, g.particles));
+    g.ellipsoids = static_cast<int>(integer("ellipsoids", 1, 64, g.ellipsoids));
+    if (!object.contains("size")) where.fail(base + ".size", "is required: [x, y, z] in metres");
+    const nlohmann::json& size = object["size"];
+    if (!size.is_array() || size.size() != 3) where.fail(base + ".size", "must be an array of 3 numbers");
+    for (int c = 0; c < 3; ++c) {
+        const std::string field = base + ".size[" + std::to_string(c) + "]";
+        const double v = readNumber(size[static_cast<std::size_t>(c)], where, field);
+        if (!(v > 0.0) || v > 1e6) where.fail(field, "must be > 0 (and at most 1e6 m)");
+        g.size[c] = v;
+    }
+    if (object.contains("radius")) {
+        const nlohmann::json& r = object["radius"];
+        if (!r.is_array() || r.size() != 2) where.fail(base + ".radius", "must be [min, max] in metres");
+        const double lo = readNumber(r[0], where, base + ".radius[0]"), hi = readNumber(r[1], where, base + ".radius[1]");
+        if (!(lo > 0.0) || !(hi >= lo) || hi > 1e6) where.fail(base + ".radius", "must be 0 < min <= max (at most 1e6 m)");
+        g.radius = {lo, hi};
+    }
+    g.roughness = readRange(object, "roughness", g.roughness, where, base + ".roughness", [](double v) { return v > 0.0 && v < 1.0; }, "in (0, 1)");
+    g.coverage = readRange(object, "coverage", g.coverage, where, base + ".coverage", [](double v) { return v >= 0.0 && v < 1.0; }, "in [0, 1)");
+    GeneratedCloud cloud = generateCloud(g);
+    out.localPositions = std::move(cloud.positions);
+    out.radii = std::move(cloud.radii);
+    out.densities = std::move(cloud.densities);
+}
+
 }  // namespace
 
 MediaScene parseMediaScene(const GltfDocument& scene) {
@@ -214,7 +261,7 @@ MediaScene parseMediaScene(const GltfDocument& scene) {
         Where where{file, name.empty() ? index : "node \"" + name + "\" (" + index + ")", std::string("extensions.") + kMediaExtension};
         const nlohmann::json& object = *extension;
         if (!object.is_object()) where.fail("", "must be an object");
-        refuseUnknownKeys(object, {"medium", "particles", "volume", "emitter", "render"}, where, "");
+        refuseUnknownKeys(object, {"medium", "particles", "generator", "volume", "emitter", "render"}, where, "");
         if (!object.contains("medium")) where.fail("medium", "is required");
 
         MediaNode out;
@@ -223,6 +270,10 @@ MediaScene parseMediaScene(const GltfDocument& scene) {
         out.origin = file + ": " + where.node;
         out.medium = parseMedium(object["medium"], where);
         if (object.contains("particles")) parseParticles(scene, object["particles"], where, out);
+        if (object.contains("generator")) {
+            if (object.contains("particles")) where.fail("generator", "cannot stand beside particles on one node (each makes the node's static cloud)");
+            parseGenerator(object["generator"], where, out);
+        }
         if (object.contains("volume")) parseVolume(object["volume"], where, out);
         if (object.contains("emitter")) out.emitter = object["emitter"];
         if (object.contains("render")) out.render = object["render"];

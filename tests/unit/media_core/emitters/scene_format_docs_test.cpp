@@ -60,12 +60,12 @@ TEST(SceneFormatDocs, EveryEmitterExampleParses) {
 TEST(SceneFormatDocs, SchemaIsDraft2020JsonWithRootAndNode) {
     const Json s = schema();
     EXPECT_EQ(s.at("$schema"), "https://json-schema.org/draft/2020-12/schema");
-    for (const char* def : {"root", "node", "medium", "particles", "emitter", "render", "volume", "noise"})
+    for (const char* def : {"root", "node", "medium", "particles", "emitter", "render", "volume", "noise", "generator"})
         EXPECT_TRUE(s.at("$defs").contains(def)) << def;
     EXPECT_EQ(s["$defs"]["node"]["required"], Json::array({"medium"}));
     std::set<std::string> nodeKeys;
     for (const auto& [key, value] : s["$defs"]["node"]["properties"].items()) nodeKeys.insert(key);
-    EXPECT_EQ(nodeKeys, (std::set<std::string>{"medium", "particles", "emitter", "render", "volume"}));
+    EXPECT_EQ(nodeKeys, (std::set<std::string>{"medium", "particles", "emitter", "render", "volume", "generator"}));
     // Every "$ref" points at a definition that exists.
     std::vector<const Json*> stack{&s};
     int refs = 0;

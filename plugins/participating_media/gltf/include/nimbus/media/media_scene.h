@@ -3,8 +3,9 @@
 // parsed and validated, and turned into world-space particles for a given time.
 //
 // Node object keys: "medium" (required), "particles" (a static cloud in the node's local frame),
-// "volume" (a box or ellipsoid of the medium at constant extinction), "emitter" and "render" (kept
-// as raw JSON for the systems that own them). Anything else is refused.
+// "generator" (a static cloud made from a seed: cloud_generator.h), "volume" (a box or ellipsoid of
+// the medium, constant or with noise), "emitter" and "render" (kept as raw JSON for the systems that
+// own them). Anything else is refused.
 //   medium:    extinction > 0 (required), albedo [r,g,b] in [0,1] (default [1,1,1]), g in (-1,1)
 //              (default 0), emission [r,g,b] >= 0 (default 0), phase "henyey-greenstein" | "rayleigh".
 //   particles: position (accessor VEC3 float), radius (accessor SCALAR float, > 0),
@@ -35,7 +36,7 @@ struct MediaNode {
     int node = -1;
     std::string name;
     Medium medium;
-    std::vector<glm::vec3> localPositions;  // the node's local frame
+    std::vector<glm::vec3> localPositions;  // the node's local frame (from `particles` or `generator`)
     std::vector<float> radii;
     std::vector<float> densities;  // same count as localPositions (1 where the file gave none)
     std::optional<VolumeDesc> volume;  // a `volume` object
