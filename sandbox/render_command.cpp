@@ -1,5 +1,5 @@
 // sandbox render SCENE [--out F] [--size WxH] [--mode M] [--quality Q] [--budget-ms B] [--time T] [--camera NAME] [--set K=V]...
-//                      [--stats F.json] [--frames N] [--exposure E]
+//                      [--stats F.json] [--frames N] [--exposure E] [--tonemap none|filmic]
 // Renders the scene headless (EGL) with the real-time renderer. With --stats it measures: the
 // median frame time over N (≥ 20) GPU-synchronised frames after warm-up, and per-pass medians over
 // another N frames timed pass by pass (synchronising each pass inflates the total, so the two are
@@ -40,6 +40,7 @@ struct RenderOptions {
     std::string stats;
     int frames = 20;
     float exposure = 1.0f;
+    std::string tonemap = "none";
     bool floor = false;
     std::string budget;  // --budget-ms, as typed
     std::string scattering;  // empty: the scene's model
@@ -53,6 +54,12 @@ double parseBudget(const std::string& text) {
     if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(ms) || !(ms > 0.0))
         throwInputError("--budget-ms", text, "", "expected a positive number of milliseconds per frame");
     return ms;
+}
+
+assets::ToneCurve parseToneCurve(const std::string& text) {
+    if (text == "none") return assets::ToneCurve::None;
+    if (text == "filmic") return assets::ToneCurve::Filmic;
+    throwInputError("--tonemap", text, "", "unknown tone curve (known: none, filmic)");
 }
 
 void renderFrame(ecs::App& app) {
@@ -140,6 +147,7 @@ int run(const RenderOptions& o) {
     parseSize(o.size, width, height);
     if (o.frames < 20) throwInputError("--frames", std::to_string(o.frames), "", "at least 20 frames are timed");
     const double budgetMs = parseBudget(o.budget);
+    const assets::ToneCurve curve = parseToneCurve(o.tonemap);
     std::unique_ptr<gpu::Context> context;  // declared first: it must outlive the GL objects the session makes
     std::unique_ptr<Session> session = openSession(o, width, height);
     context = gpu::Context::create();
@@ -163,7 +171,7 @@ int run(const RenderOptions& o) {
         stats["splat_floor_ms"] = media && media->renderer ? media->renderer->measureSplatFloor(view, o.frames) : 0.0;
     }
     const gpu::GlErrorReport errors = context->takeGlErrors();
-    for (const auto& file : o.out) assets::writeImage(file, image, {o.exposure});
+    for (const auto& file : o.out) assets::writeImage(file, image, {o.exposure, curve});
     stats["width"] = width;
     stats["height"] = height;
     if (!o.stats.empty()) writeStats(o, *session, *context, errors.count, stats);
@@ -200,6 +208,8 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--stats", options->stats, "write frame timings and renderer info as JSON");
     cmd->add_option("--frames", options->frames, "timed frames for --stats (at least 20)")->capture_default_str();
     cmd->add_option("--exposure", options->exposure, "PNG exposure multiplier")->capture_default_str()->check(CLI::PositiveNumber);
+    cmd->add_option("--tonemap", options->tonemap, "PNG tone curve after the exposure: none (clip at 1) or filmic (ACES fit); EXR stays linear")
+        ->capture_default_str();
     cmd->add_flag("--floor", options->floor, "with --stats: also measure splat_floor_ms, every particle's billboard blended once")
         ->needs(cmd->get_option("--stats"));
     return [options] { return run(*options); };

@@ -60,13 +60,19 @@ void writePixels(const std::filesystem::path& file, int width, int height, OIIO:
 
 void writeImage(const std::filesystem::path& file, const RgbImage& image, const ImageWriteOptions& options) {
     if (isLinearFormat(file)) return writePixels(file, image.width, image.height, OIIO::TypeDesc::FLOAT, image.rgb.data());
-    writeDisplayPixels(file, image.width, image.height, displayEncode(image, options.exposure));
+    writeDisplayPixels(file, image.width, image.height, displayEncode(image, options.exposure, options.curve));
 }
 
-std::vector<std::uint8_t> displayEncode(const RgbImage& image, float exposure) {
+float applyToneCurve(float x, ToneCurve curve) {
+    if (curve == ToneCurve::None || !(x > 0.0f)) return x;
+    // The fit overshoots 1 slightly past x ≈ 10 (its limit is 2.51/2.43): a display value stops at 1.
+    return std::min(x * (2.51f * x + 0.03f) / (x * (2.43f * x + 0.59f) + 0.14f), 1.0f);
+}
+
+std::vector<std::uint8_t> displayEncode(const RgbImage& image, float exposure, ToneCurve curve) {
     std::vector<std::uint8_t> bytes(image.rgb.size());
     for (std::size_t i = 0; i < bytes.size(); ++i)
-        bytes[i] = static_cast<std::uint8_t>(std::lround(255.0f * srgbEncode(image.rgb[i] * exposure)));
+        bytes[i] = static_cast<std::uint8_t>(std::lround(255.0f * srgbEncode(applyToneCurve(image.rgb[i] * exposure, curve))));
     return bytes;
 }
 

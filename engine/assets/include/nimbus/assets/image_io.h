@@ -34,8 +34,14 @@ struct RgbImage {
     }
 };
 
+// The tone curve display encoding applies after the exposure. None clamps at 1 (the documented
+// default); Filmic is Narkowicz's fit of the ACES reference rendering transform,
+// x(2.51x + 0.03) / (x(2.43x + 0.59) + 0.14), which rolls highlights off instead of clipping them.
+enum class ToneCurve : std::uint8_t { None, Filmic };
+
 struct ImageWriteOptions {
-    float exposure = 1.0f;  // display-encoded formats only
+    float exposure = 1.0f;            // display-encoded formats only
+    ToneCurve curve = ToneCurve::None;  // display-encoded formats only
 };
 
 // True for formats that store linear floats (.exr, .hdr, .tif/.tiff as float).
@@ -44,8 +50,10 @@ bool isLinearFormat(const std::filesystem::path& file);
 // Writes by file extension. Throws nimbus::InputError (unwritable path, unknown format).
 void writeImage(const std::filesystem::path& file, const RgbImage& image, const ImageWriteOptions& options = {});
 
-// Display encoding as PNG writing does it: 8-bit sRGB of L · exposure clamped to [0, 1], RGB rows.
-std::vector<std::uint8_t> displayEncode(const RgbImage& image, float exposure = 1.0f);
+// Display encoding as PNG writing does it: 8-bit sRGB of curve(L · exposure) clamped to [0, 1], RGB rows.
+std::vector<std::uint8_t> displayEncode(const RgbImage& image, float exposure = 1.0f, ToneCurve curve = ToneCurve::None);
+// The tone curve alone, per channel.
+float applyToneCurve(float x, ToneCurve curve);
 
 // Writes 8-bit RGB pixels that are already display values (a window screenshot), row 0 at the top.
 void writeDisplayPixels(const std::filesystem::path& file, int width, int height, const std::vector<std::uint8_t>& rgb8);
