@@ -159,6 +159,10 @@ void EditorApp::layoutWindow(const char* name, float x, float y, float w, float 
 
 void EditorApp::drawWindows() {
     report(drawMenuBar(*state_, menu_, recent_, *viewport_));
+    if (auto notice = state_->takeNotice()) {
+        status_ = *notice;
+        statusIsError_ = false;
+    }
     shortcuts();
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = ImGui::GetFrameHeight();
