@@ -1,5 +1,5 @@
 #pragma once
-// `raymarch` mode's grid (seed 002): the particles' medium sampled at voxel centres, σ_t with the
+// `raymarch` mode's grid (Schpok et al.): the particles' medium sampled at voxel centres, σ_t with the
 // σ-weighted albedo, emission and phase asymmetry, for the GPU to interpolate trilinearly.
 //
 // Does not: filter (a voxel holds the kernel sums at its centre) or keep more than one phase
