@@ -1,4 +1,4 @@
-# Every dependency is a Debian 12 package (scripts/bootstrap installs them); see DESIGN.md §1.
+# Every dependency is a Debian 12 package (scripts/bootstrap installs them); see docs/design.md §1.
 find_package(PkgConfig REQUIRED)
 find_package(Threads REQUIRED)
 find_package(OpenGL REQUIRED COMPONENTS OpenGL EGL)

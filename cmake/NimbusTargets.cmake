@@ -16,12 +16,15 @@ if(NIMBUS_SANITIZE)
 endif()
 
 # nimbus_module(NAME name SOURCES ... DEPS ...): a library whose public headers live in include/.
+# Installed (the media plugin's package), its headers are under the prefix's include/ and it carries
+# none of Nimbus's warning flags to the host.
 function(nimbus_module)
   cmake_parse_arguments(M "" "NAME" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(${M_NAME} STATIC ${M_SOURCES})
-  target_include_directories(${M_NAME} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include
+  target_include_directories(${M_NAME} PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+                                              $<INSTALL_INTERFACE:include>
                                        PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
-  target_link_libraries(${M_NAME} PUBLIC nimbus_options ${M_DEPS} PRIVATE ${M_PRIVATE_DEPS})
+  target_link_libraries(${M_NAME} PUBLIC $<BUILD_INTERFACE:nimbus_options> ${M_DEPS} PRIVATE ${M_PRIVATE_DEPS})
 endfunction()
 
 # nimbus_forbid_links(TARGET t FORBIDDEN a b ...): fails the configure step when `t` links any of

@@ -1,5 +1,5 @@
 // sandbox bench SCENE [--out DIR] [--size WxH] [--time T] [--frames N] [--scaling] [--only NAME]...
-// DESIGN.md §6: renders the reference once, then sweeps the settings that trade speed for error
+// docs/design.md §6: renders the reference once, then sweeps the settings that trade speed for error
 // (modes, slices, blocks, impostor resolution, instancing, media scale), measuring each one's
 // frame time (median of N GPU-synchronised frames, per pass), its error against the reference, and
 // the splat floor (every particle's billboard blended once). --scaling adds a sweep of particle

@@ -8,7 +8,7 @@
 #include <variant>
 
 #include "nimbus/base/error.h"
-#include "nimbus/base/paths.h"
+#include "source_tree.h"
 
 namespace nimbus::sandbox {
 namespace {

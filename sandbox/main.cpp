@@ -1,4 +1,4 @@
-// sandbox: Nimbus's command-line front end (DESIGN.md §5). Each subcommand lives in its own file.
+// sandbox: Nimbus's command-line front end (docs/design.md §5). Each subcommand lives in its own file.
 #include <cstdio>
 #include <exception>
 #include <map>

@@ -1,6 +1,6 @@
 // sandbox reference SCENE --out F.exr [--size WxH] [--time T] [--camera NAME] [--tolerance E] [--threads N]
 //                         [--spp N] [--seed S] [--scattering single|multiple]
-// Renders the ground truth of DESIGN.md §2 on the CPU (plugins/participating_media/reference) and
+// Renders the ground truth of docs/design.md §2 on the CPU (plugins/participating_media/reference) and
 // writes it as linear radiance (.exr; any other format OIIO writes is display-encoded). In the
 // multiple-scattering model it also writes each pixel's standard error beside it (F.stderr.exr)
 // and prints its mean.

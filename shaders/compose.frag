@@ -1,5 +1,5 @@
 #version 450 core
-// Compose (DESIGN.md §3 step 4): a translucent layer (the media target) holds in-scattered radiance
+// Compose (docs/design.md §3 step 4): a translucent layer (the media target) holds in-scattered radiance
 // (premultiplied) in rgb and the view transmittance in a, so final = layer.rgb + layer.a · opaque.
 // COMPOSE_LAYER: there is one; COMPOSE_UPSAMPLE: at a reduced resolution, upsampled with depth
 // awareness on the way (common/upsample.glsl). COMPOSE_FOG: the opaque image (meshes and background)

@@ -1,5 +1,5 @@
 #version 450 core
-// Lambert shading of DESIGN.md §4: L_s = baseColor/π · Σ E_l max(0, n·l) V_mesh T_l + baseColor · L_amb.
+// Lambert shading of docs/design.md §4: L_s = baseColor/π · Σ E_l max(0, n·l) V_mesh T_l + baseColor · L_amb.
 // V_mesh from the mesh shadow maps (PCF), T_l = exp(−τ) from the medium's light slices when an
 // extension provides them (1 otherwise).
 #include "common/math.glsl"

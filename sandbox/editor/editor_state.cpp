@@ -1,11 +1,13 @@
 #include "editor_state.h"
 
 #include "nimbus/base/error.h"
+#include "nimbus/base/log.h"
 #include "nimbus/scene/scene_plugin.h"
 
 namespace nimbus::sandbox::editor {
 
-EditorState::EditorState(ViewSettings view) : view_(std::move(view)), document_(Document::empty()) {
+EditorState::EditorState(ViewSettings view, std::size_t historyLimitBytes)
+    : view_(std::move(view)), document_(Document::empty()), history_(historyLimitBytes) {
     session_ = buildSession(document_, 0.0, view_);
 }
 
@@ -83,10 +85,28 @@ void EditorState::apply(const std::string& label, const Change& change, int sele
     Document next = document_;
     change(next.json());
     auto session = buildSession(next, time_, view_);
-    history_.push({label, document_.json(), next.json(), selected_, selectionAfter});
+    const std::size_t dropped = history_.push({label, document_.json(), next.json(), selected_, selectionAfter});
     document_ = std::move(next);
     selected_ = selectionAfter;
     replaceSession(std::move(session));
+    if (dropped > 0) reportDropped(dropped);
+}
+
+// The first drop after a file is opened goes to the log; every drop to the notice the window shows.
+void EditorState::reportDropped(std::size_t dropped) {
+    const std::size_t bytes = history_.limitBytes();
+    const std::string limit = bytes >= (std::size_t{1} << 20) ? std::to_string(bytes >> 20) + " MiB" : std::to_string(bytes >> 10) + " KiB";
+    notice_ = "undo history at its " + limit + " limit: dropped the oldest " + std::to_string(dropped) +
+              (dropped == 1 ? " step" : " steps") + " (" + std::to_string(history_.droppedSinceClear()) + " so far, " +
+              std::to_string(history_.size()) + " kept)";
+    if (history_.droppedSinceClear() == dropped)
+        log::warn("the undo history reached its " + limit + " limit: the oldest steps are dropped from now on");
+}
+
+std::optional<std::string> EditorState::takeNotice() {
+    auto out = std::move(notice_);
+    notice_.reset();
+    return out;
 }
 
 void EditorState::set(const std::vector<FieldEdit>& edits, const std::string& label) {
@@ -130,22 +150,26 @@ void EditorState::reparentSelected(int parent) {
 // The step's state is loaded before the history moves, so a step that no longer loads (the view
 // settings changed since) leaves everything where it was.
 bool EditorState::undo() {
-    if (!history_.canUndo()) return false;
+    auto target = history_.peekUndo();
+    if (!target) return false;
     Document previous = document_;
-    previous.json() = history_.peekUndo().before;
+    previous.json() = std::move(target->json);
     auto session = buildSession(previous, time_, view_);
-    selected_ = history_.undo()->selectionBefore;
+    history_.undo();
+    selected_ = target->selection;
     document_ = std::move(previous);
     replaceSession(std::move(session));
     return true;
 }
 
 bool EditorState::redo() {
-    if (!history_.canRedo()) return false;
+    auto target = history_.peekRedo();
+    if (!target) return false;
     Document next = document_;
-    next.json() = history_.peekRedo().after;
+    next.json() = std::move(target->json);
     auto session = buildSession(next, time_, view_);
-    selected_ = history_.redo()->selectionAfter;
+    history_.redo();
+    selected_ = target->selection;
     document_ = std::move(next);
     replaceSession(std::move(session));
     return true;

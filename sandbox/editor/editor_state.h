@@ -7,6 +7,7 @@
 // Does not: own GL objects or windows (the Session renders into whatever context is current).
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,7 +32,8 @@ struct FieldEdit {
 
 class EditorState {
 public:
-    explicit EditorState(ViewSettings view = {});
+    // The undo history keeps at most `historyLimitBytes` of document states (History).
+    explicit EditorState(ViewSettings view = {}, std::size_t historyLimitBytes = History::kDefaultLimitBytes);
 
     // ---- files
     void open(const std::filesystem::path& file);  // the current document stays if this throws
@@ -58,6 +60,8 @@ public:
     bool undo();
     bool redo();
     const History& history() const { return history_; }
+    // What the last edits dropped from the undo history, once: "undo history at its 256 MiB limit: ...".
+    std::optional<std::string> takeNotice();
 
     // ---- time: scrubbing re-simulates from 0, playing steps on; both land on the same state
     double time() const { return time_; }
@@ -82,6 +86,7 @@ private:
     void replaceSession(std::unique_ptr<Session> next);
     std::unique_ptr<Session> buildSession(const Document& document, double time, const ViewSettings& view) const;
     int requireSelection(const char* what) const;
+    void reportDropped(std::size_t dropped);
 
     ViewSettings view_;
     Document document_;
@@ -90,6 +95,7 @@ private:
     int selected_ = -1;
     double time_ = 0.0;
     std::uint64_t revision_ = 0;
+    std::optional<std::string> notice_;
 };
 
 }  // namespace nimbus::sandbox::editor

@@ -1,6 +1,9 @@
 #include "script.h"
 
+#include <unistd.h>
+
 #include <charconv>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -58,6 +61,22 @@ void setCommand(EditorState& state, const Command& c) {
     state.setOnSelected(path, value);
 }
 
+// Resident memory as the kernel counts it (Linux's /proc), 0 where it cannot be read.
+double residentMiB() {
+    std::ifstream statm("/proc/self/statm");
+    std::size_t pages = 0, resident = 0;
+    if (!(statm >> pages >> resident)) return 0.0;
+    return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+void memoryCommand(const EditorState& state) {
+    const History& h = state.history();
+    std::printf("memory: resident %.1f MiB, undo history %.1f MiB of %.0f MiB in %zu steps (%zu dropped)\n", residentMiB(),
+                static_cast<double>(h.bytes()) / (1024.0 * 1024.0), static_cast<double>(h.limitBytes()) / (1024.0 * 1024.0),
+                h.size(), h.droppedSinceClear());
+    std::fflush(stdout);
+}
+
 void addCommand(EditorState& state, const Command& c) {
     const Command parts = split(requireArgument(c, "add emitter|cloud|light|box|camera NAME"));
     const auto kind = parseNodeKind(parts.name);
@@ -108,6 +127,7 @@ const std::map<std::string, Handler>& handlers() {
              if (c.rest.empty()) t.state().save();
              else t.state().saveAs(c.rest);
          }},
+        {"memory", [](ScriptTarget& t, const Command& c) { noArgument(c); memoryCommand(t.state()); }},
         {"quit", [](ScriptTarget& t, const Command& c) { noArgument(c); t.quit(); }},
     };
     return table;

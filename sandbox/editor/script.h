@@ -5,6 +5,7 @@
 //   time SECONDS | quality fast|balanced|exact | mode M | frames N | screenshot FILE.png
 //   viewport FILE.exr | reference [FILE.exr] | save FILE | quit
 // and, beyond those: open FILE | duplicate | rename NAME | parent NODE_NAME|- | play SECONDS | camera NAME|-
+// | memory (prints resident memory and the undo history's size)
 // Blank lines and lines starting with '#' are skipped. A command that fails throws InputError with
 // the reason; the editor's state is as it was before that command.
 //

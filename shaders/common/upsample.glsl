@@ -1,4 +1,4 @@
-// Depth-aware upsampling of a reduced-resolution translucent layer (seed 002's offscreen particles):
+// Depth-aware upsampling of a reduced-resolution translucent layer (Jendersie's offscreen particles):
 // the four low-resolution texels around the pixel, weighted bilinearly, keep only those computed at
 // this pixel's depth (within `threshold`, relative); where none was, the one closest in depth, so
 // smoke does not bleed over the silhouette of a mesh in front of it. Dropping only the mismatched

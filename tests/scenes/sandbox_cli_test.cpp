@@ -1,4 +1,4 @@
-// `sandbox render` run as a user runs it (DESIGN.md §5): malformed scenes are refused with a
+// `sandbox render` run as a user runs it (docs/design.md §5): malformed scenes are refused with a
 // non-zero exit and one line naming the file, third-party models render, a scene carrying our
 // extension still draws its meshes, bad arguments are refused, and --stats reports the frame.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // A ground pixel in a box's shadow is darker than its lit neighbour by exactly the ratio the
-// lighting model gives (DESIGN.md §4: L = base/π·E·cosθ·V + base·L_amb):
+// lighting model gives (docs/design.md §4: L = base/π·E·cosθ·V + base·L_amb):
 //   L_shadow / L_lit = base·L_amb / (base/π·E·cosθ + base·L_amb).
 // The scene is built in memory and rendered the way `sandbox render` renders a file.
 // Which pixels are shadowed is decided from geometry alone: the ray through the pixel centre

@@ -208,7 +208,7 @@ class Builder:
         self.root_ext = {"background": list(background), "ambient": list(ambient)}
 
     def particles(self, positions, radii, densities=None):
-        """The `particles` object of the node extension (DESIGN.md §4)."""
+        """The `particles` object of the node extension (docs/design.md §4)."""
         p = {"position": self.accessor_floats(positions, "VEC3", with_bounds=True),
              "radius": self.accessor_floats(radii, "SCALAR")}
         if densities is not None:

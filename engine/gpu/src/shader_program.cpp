@@ -1,12 +1,13 @@
 #include "nimbus/gpu/shader_program.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
 
 #include "nimbus/base/error.h"
-#include "nimbus/base/paths.h"
+#include "nimbus/gpu/builtin_shaders.h"
 
 namespace nimbus::gpu {
 namespace {
@@ -19,17 +20,35 @@ std::string readFile(const std::filesystem::path& path) {
     return text.str();
 }
 
+// The folder that stands in for the built-in shaders, when $NIMBUS_SHADER_DIR names one.
+std::filesystem::path overrideFolder() {
+    const char* value = std::getenv("NIMBUS_SHADER_DIR");
+    return value != nullptr ? std::filesystem::path(value) : std::filesystem::path();
+}
+
 struct Preprocessor {
-    std::vector<std::filesystem::path> folders;  // the program's folder, then its include path
+    // Searched in order; an empty path is the built-in shaders (or $NIMBUS_SHADER_DIR in their place).
+    std::vector<std::filesystem::path> folders;
     PreprocessedSource out;
     std::set<std::string> included;
     std::vector<std::string> stack;
 
-    // The first folder that has `file` (the program's own when none has: its error names that path).
-    std::filesystem::path locate(const std::string& file) const {
-        for (const auto& folder : folders)
-            if (std::filesystem::exists(folder / file)) return folder / file;
-        return folders.front() / file;
+    // The first folder that has `file`.
+    std::string read(const std::string& file) const {
+        const std::filesystem::path replacement = overrideFolder();
+        std::string searched;
+        for (const auto& entry : folders) {
+            const std::filesystem::path folder = entry.empty() ? replacement : entry;
+            if (!searched.empty()) searched.append(", ");
+            if (folder.empty()) {
+                if (const BuiltInShader* shader = builtInShader(file)) return std::string(shader->text);
+                searched.append("the built-in shaders");
+                continue;
+            }
+            if (std::filesystem::exists(folder / file)) return readFile(folder / file);
+            searched.append(folder.string());
+        }
+        throw SystemError("shader file not found: " + file + " (searched " + searched + ")");
     }
 
     void expand(const std::string& file, const std::vector<std::string>* defines) {
@@ -40,7 +59,7 @@ struct Preprocessor {
         const int index = static_cast<int>(out.files.size());
         out.files.push_back(file);
 
-        std::istringstream lines(readFile(locate(file)));
+        std::istringstream lines(read(file));
         static const std::regex includeLine(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
         std::string line;
         int number = 0;
@@ -89,8 +108,11 @@ Shader compileStage(GLenum type, const ProgramDesc& desc, const std::filesystem:
 
 PreprocessedSource preprocessShader(const std::filesystem::path& folder, const std::string& file,
                                     const std::vector<std::string>& defines, const std::vector<std::filesystem::path>& includePath) {
+    // A program's own folder, then its include path, then the built-in shaders (a host's shader
+    // includes the plugin's files with no folder of Nimbus's on disk).
     Preprocessor pre{{folder}, {}, {}, {}};
     pre.folders.insert(pre.folders.end(), includePath.begin(), includePath.end());
+    if (!folder.empty()) pre.folders.emplace_back();
     pre.expand(file, &defines);
     return pre.out;
 }
@@ -118,7 +140,7 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
 }
 
 Program compileProgram(const ProgramDesc& desc) {
-    const std::filesystem::path folder = desc.folder.empty() ? shaderDirectory() : desc.folder;
+    const std::filesystem::path& folder = desc.folder;
     std::string errors;
     std::vector<Shader> stages;
     const std::pair<GLenum, const std::string*> wanted[] = {{GL_VERTEX_SHADER, &desc.vertex},

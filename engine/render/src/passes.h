@@ -9,7 +9,7 @@
 
 namespace nimbus::render {
 
-// Depth from every light view into one D32F array (DESIGN.md §3 step 1).
+// Depth from every light view into one D32F array (docs/design.md §3 step 1).
 class ShadowPass {
 public:
     ShadowPass();
@@ -21,7 +21,7 @@ private:
     friend class OpaquePass;
 };
 
-// Lambert meshes with shadows into scene colour + depth (DESIGN.md §3 step 2).
+// Lambert meshes with shadows into scene colour + depth (docs/design.md §3 step 2).
 class OpaquePass {
 public:
     OpaquePass();
@@ -33,7 +33,7 @@ private:
     std::map<std::vector<std::string>, gpu::Program> programs_;
 };
 
-// media over opaque into the persistent output (DESIGN.md §3 step 4).
+// media over opaque into the persistent output (docs/design.md §3 step 4).
 class ComposePass {
 public:
     ComposePass();

@@ -1,11 +1,19 @@
 #pragma once
-// Undo and redo for the editor: every edit is one step holding the document's JSON before and
-// after it, and the selection on each side. Documents are small, so whole snapshots keep every
-// edit (add and delete included) trivially reversible.
+// Undo and redo for the editor: every edit is one step from one state of the document's JSON to the
+// next, with the selection on each side. Whole states keep every edit (add and delete included)
+// trivially reversible. A state is held as compact JSON text, a fraction of the parsed tree's size,
+// and a step's "after" is the next step's "before", held once.
 //
-// Does not: merge steps (a gizmo drag is committed once, on release) or limit memory.
+// The history holds at most limitBytes() of states (256 MiB unless told otherwise). Past it, the
+// oldest steps are dropped, newest kept, and push() returns how many went, so the editor can say so.
+// One step larger than the whole limit is still kept, alone.
+//
+// Does not: merge steps (a gizmo drag is committed once, on release), or compress the states.
+#include <cstddef>
+#include <deque>
+#include <memory>
+#include <optional>
 #include <string>
-#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -17,13 +25,26 @@ struct HistoryStep {
     int selectionBefore = -1, selectionAfter = -1;
 };
 
+// Where undo or redo leads: the document's JSON and the selection there.
+struct HistoryState {
+    nlohmann::json json;
+    int selection = -1;
+};
+
 class History {
 public:
-    void push(HistoryStep step);  // drops the steps that were undone
-    const HistoryStep* undo();    // the step to revert, or nullptr
-    const HistoryStep* redo();    // the step to apply again, or nullptr
-    const HistoryStep& peekUndo() const { return steps_[position_ - 1]; }  // needs canUndo()
-    const HistoryStep& peekRedo() const { return steps_[position_]; }      // needs canRedo()
+    static constexpr std::size_t kDefaultLimitBytes = std::size_t{256} << 20;
+
+    explicit History(std::size_t limitBytes = kDefaultLimitBytes) : limit_(limitBytes) {}
+
+    // Drops the steps that were undone, then the oldest steps while over the limit. Returns how
+    // many of the oldest steps it dropped.
+    std::size_t push(const HistoryStep& step);
+    // The state undo or redo would lead to (parsed), or nullopt when there is none.
+    std::optional<HistoryState> peekUndo() const;
+    std::optional<HistoryState> peekRedo() const;
+    void undo();  // needs canUndo()
+    void redo();  // needs canRedo()
     bool canUndo() const { return position_ > 0; }
     bool canRedo() const { return position_ < steps_.size(); }
     std::string undoLabel() const { return canUndo() ? steps_[position_ - 1].label : ""; }
@@ -31,12 +52,30 @@ public:
     // Saving marks the current position; the document is clean while the position is there.
     void markSaved() { saved_ = position_; }
     bool atSaved() const { return saved_ == position_; }
-    void clear() { steps_.clear(); position_ = 0; saved_ = 0; }
+    void clear();
+
+    std::size_t size() const { return steps_.size(); }
+    std::size_t bytes() const { return bytes_; }            // what the kept steps hold, labels and states
+    std::size_t limitBytes() const { return limit_; }
+    std::size_t droppedSinceClear() const { return dropped_; }  // oldest steps dropped since clear()
 
 private:
-    std::vector<HistoryStep> steps_;
+    using Text = std::shared_ptr<const std::string>;
+    struct Stored {
+        std::string label;
+        Text before, after;
+        int selectionBefore = -1, selectionAfter = -1;
+    };
+    Text keep(const nlohmann::json& state, const Text& same);
+    void release(Stored& step);
+    std::size_t dropOldest();
+
+    std::deque<Stored> steps_;
     std::size_t position_ = 0;
-    std::size_t saved_ = 0;  // SIZE_MAX once the saved state was dropped by a new edit
+    std::size_t saved_ = 0;  // kNotReachable once the saved state was dropped or overwritten
+    std::size_t bytes_ = 0;
+    std::size_t limit_;
+    std::size_t dropped_ = 0;
 };
 
 }  // namespace nimbus::sandbox::editor

@@ -109,6 +109,7 @@ int pick(const Ray& ray, const std::vector<PickTarget>& targets) {
     int best = -1;
     double bestT = std::numeric_limits<double>::infinity();
     for (const PickTarget& target : targets) {
+        if (target.sphere && glm::length(ray.origin - target.centre) <= target.radius) continue;  // an icon around the eye
         const std::optional<double> t =
             target.sphere ? intersectSphere(ray, target.centre, target.radius) : intersectAabb(ray, target.box);
         if (t && *t < bestT) {

@@ -47,7 +47,9 @@ struct PickTarget {
     double radius = 0.0;
 };
 
-// The id of the nearest target hit (the first listed on a tie); -1 when none.
+// The id of the nearest target hit (the first listed on a tie); -1 when none. A sphere the ray starts
+// inside is not hit: an icon around the eye is the camera the view looks through, not on screen.
+// (A box the ray starts inside is hit at 0: the eye inside a cloud picks the cloud.)
 int pick(const Ray& ray, const std::vector<PickTarget>& targets);
 
 // The 8 corners of `box` transformed by `world` as a world-space Aabb (empty stays empty).

@@ -159,6 +159,10 @@ void EditorApp::layoutWindow(const char* name, float x, float y, float w, float 
 
 void EditorApp::drawWindows() {
     report(drawMenuBar(*state_, menu_, recent_, *viewport_));
+    if (auto notice = state_->takeNotice()) {
+        status_ = *notice;
+        statusIsError_ = false;
+    }
     shortcuts();
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = ImGui::GetFrameHeight();
@@ -193,11 +197,22 @@ void EditorApp::drawWindows() {
 
     layoutWindow("Status", 0, display.y - kStatusHeight, display.x, kStatusHeight);
     const std::string file = state_->document().isUntitled() ? "(untitled)" : state_->document().path().string();
+    showTitle();
     ImGui::Text("%s%s | t = %.2f s |", file.c_str(), state_->dirty() ? " *" : "", state_->time());
     ImGui::SameLine();
     if (statusIsError_) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", status_.c_str());
     else ImGui::TextUnformatted(status_.c_str());
     ImGui::End();
+}
+
+// The window's title names the file and marks unsaved changes, as the status bar does, once the
+// frame that shows them is drawn: "smoke.gltf* - Nimbus editor".
+void EditorApp::showTitle() {
+    const std::string name = state_->document().isUntitled() ? "(untitled)" : state_->document().path().filename().string();
+    std::string title = name + (state_->dirty() ? "*" : "") + " - Nimbus editor";
+    if (title == title_) return;
+    glfwSetWindowTitle(static_cast<GLFWwindow*>(context_->nativeWindow()), title.c_str());
+    title_ = std::move(title);
 }
 
 void EditorApp::shortcuts() {

@@ -54,6 +54,7 @@ private:
     void drawWindows();
     void layoutWindow(const char* name, float x, float y, float w, float h);
     void shortcuts();
+    void showTitle();
     void applyBudget();
     void report(const std::optional<std::string>& error);
     void startReference();
@@ -71,6 +72,7 @@ private:
     double budgetMs_ = 0.0;
     PerformanceRequest request_;
     std::string status_;
+    std::string title_;
     bool statusIsError_ = false;
     std::optional<std::filesystem::path> pendingScreenshot_;
     bool quit_ = false;

@@ -1,8 +1,8 @@
 #version 450 core
-// A block impostor texel acts as one "super-particle" (seed 000 §2): opacity from its optical depth,
-// in-scattering at its optical-depth-weighted shading point with its weighted albedo, emission and
-// g. Where the opaque surface lies inside the block's [front, back] interval, the optical depth is
-// scaled by the share of its mass in front of it (seed 000 §2.4, with the block's depth profile
+// A block impostor texel acts as one "super-particle" (Umenhoffer and Szirmay-Kalos §2): opacity from its
+// optical depth, in-scattering at its optical-depth-weighted shading point with its weighted albedo, emission
+// and g. Where the opaque surface lies inside the block's [front, back] interval, the optical depth is
+// scaled by the share of its mass in front of it (Umenhoffer and Szirmay-Kalos §2.4, with the block's depth profile
 // instead of uniform density), so a mesh crossing a cloud shows no billboard plane.
 #include "media/bindings.glsl"
 #include "common/math.glsl"

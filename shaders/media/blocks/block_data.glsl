@@ -43,7 +43,7 @@ vec2 tileNdc(BlockTile tile, vec2 texel) {
     return tile.rect.xy + local * (tile.rect.zw - tile.rect.xy);
 }
 
-// One impostor sample: total optical depth, front and back ray distances (seed 000 §2.1), and the
+// One impostor sample: total optical depth, front and back ray distances (Umenhoffer and Szirmay-Kalos §2.1), and the
 // optical-depth-weighted sums of albedo, emission, g and the depth moments.
 struct ImpostorSample {
     float tau;

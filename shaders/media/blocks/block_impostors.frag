@@ -1,6 +1,6 @@
 #version 450 core
 // One particle's share of a block impostor texel, along the exact view ray the texel stands for.
-// Target 0 blends MIN on rgb and ADD on alpha (seed 000 §2.1, one pass): r = front (ray distance
+// Target 0 blends MIN on rgb and ADD on alpha (Umenhoffer and Szirmay-Kalos §2.1, one pass): r = front (ray distance
 // where the first particle starts), g = −back, b = edge distance, a = optical depth. Targets 1 and 2 add the
 // optical-depth-weighted albedo, emission and g (camera impostors only), target 3 the depth moments.
 #include "common/math.glsl"
@@ -43,7 +43,7 @@ void main() {
     float tau = particle.albedoSigma.w * chordIntegral(chord, radius, lo, chord.halfChord);
     if (!(tau > 0.0)) discard;
     // Front and back of the particle's mass, not of its truncation sphere: a uniform density
-    // between them (seed 000 §2.4) matches a Gaussian of deviation s = R/3 best (same mean and
+    // between them (Umenhoffer and Szirmay-Kalos §2.4) matches a Gaussian of deviation s = R/3 best (same mean and
     // variance) over ±√3·s, so that is the extent each particle contributes to the interval a
     // block's depth profile is cut to.
     float extent = min(chord.halfChord, 1.7320508 * radius / 3.0);

@@ -1,5 +1,5 @@
 #version 450 core
-// Depth impostors (seed 000 §2.1, media/block_impostor_pass.cpp): every particle is drawn into its
+// Depth impostors (Umenhoffer and Szirmay-Kalos §2.1, media/block_impostor_pass.cpp): every particle is drawn into its
 // block's tile of the atlas, where the tile stands for the block's rectangle in the view (the
 // camera or a light view). Clip distances keep each quad inside its tile.
 #include "common/math.glsl"

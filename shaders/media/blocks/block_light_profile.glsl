@@ -1,4 +1,4 @@
-// How a block's optical depth along one light ray is spread over depth (seed 000 §2.2): a normal
+// How a block's optical depth along one light ray is spread over depth (Umenhoffer and Szirmay-Kalos §2.2): a normal
 // with the block's optical-depth-weighted mean and deviation along the ray (for a lamp: the normal
 // cut at the lamp that has them). block_slices.frag writes the slices with it, and
 // block_own_optical_depth.glsl recomputes what they hold of a block. Needs media/optics.

@@ -9,7 +9,7 @@
 float blockOrderLogFactor(float t);
 
 // How a block's optical depth lies along one ray: a Gaussian with the impostor's mean and deviation
-// of depth, cut to the block's [front, back] (seed 000 §2.4 assumes uniform density over that
+// of depth, cut to the block's [front, back] (Umenhoffer and Szirmay-Kalos §2.4 assumes uniform density over that
 // interval; the moments follow where the mass actually lies, as the light slices spread a block in
 // block_slices.frag). A profile without spread (one particle's centre on the ray's plane) is
 // uniform over [front, back].

@@ -1,5 +1,5 @@
 #version 450 core
-// A block's optical depth towards the light, spread over the slice planes (seed 000 §2.2): plane k
+// A block's optical depth towards the light, spread over the slice planes (Umenhoffer and Szirmay-Kalos §2.2): plane k
 // gets τ · Φ((t_k − μ)/σ), a normal with the block's optical-depth-weighted mean and deviation along
 // the light ray, cut where the block's kernels start (and at a lamp) and complete past where they
 // end (block_light_profile.glsl). Additive, like the particle slices.

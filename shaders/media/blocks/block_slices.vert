@@ -1,5 +1,5 @@
 #version 450 core
-// Light slices from blocks (seed 000 §2.2, media/block_slice_pass.cpp): one quad per block over its
+// Light slices from blocks (Umenhoffer and Szirmay-Kalos §2.2, media/block_slice_pass.cpp): one quad per block over its
 // rectangle in the light view; the fragment shader spreads the block's light impostor over the slices.
 #include "media/blocks/block_data.glsl"
 

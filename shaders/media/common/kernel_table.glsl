@@ -1,5 +1,5 @@
-// Seed 004's pre-integrated kernel segments (media/kernel_table.h): the optical depth of a particle
-// of unit radius and unit peak extinction along a ray at impact parameter β, from where the ray
+// Pre-integrated kernel segments (the sheet-buffer splatting paper; media/kernel_table.h): the optical depth of
+// a particle of unit radius and unit peak extinction along a ray at impact parameter β, from where the ray
 // enters the sphere up to μ past its closest point (β, μ in radii). Bilinear in a small table.
 #include "media/bindings.glsl"
 layout(binding = MEDIA_KERNEL_TABLE_UNIT) uniform sampler2D uKernelTable;

@@ -1,14 +1,14 @@
-// Light arriving at a point inside the medium and scattered towards the camera (DESIGN.md §2):
+// Light arriving at a point inside the medium and scattered towards the camera (docs/design.md §2):
 //   J = albedo · (Σ_l p(θ) E_l V_mesh T_l + L_amb) + emission      (per unit optical depth)
 // T_l = exp(−τ) from the light slices; V_mesh from the mesh shadow map with the smooth weighting of
-// seed 001 §III (never a hard cut through a billboard). Needs common/frame, lights, light_views,
+// Bass and Anderson §III (never a hard cut through a billboard). Needs common/frame, lights, light_views,
 // transmittance, media/optics.
 #include "media/common/mesh_shadow.glsl"
 #include "media/common/lamp_neighbourhood.glsl"
 #include "media/common/multiple_scattering.glsl"
 #include "media/common/own_optical_depth.glsl"
 
-// Seed 001 §III: instead of a lit/unlit test per pixel, compare the occluder depth the shadow map
+// Bass and Anderson §III: instead of a lit/unlit test per pixel, compare the occluder depth the shadow map
 // stores with the receiver's depth and weight smoothly over the particle's own depth extent: the
 // fraction of a Gaussian of standard deviation `softness` (R/3) that lies in front of the occluder.
 // The 3×3 taps are spread over ±softness across the light's view, not over shadow-map texels: a
@@ -137,7 +137,7 @@ bool meshShadowCrossing(int i, vec3 origin, vec3 dir, float t0, float t, float t
 // Mesh visibility of light i over a particle's visible segment [lo, hi], as the fraction of the
 // kernel's mass on the lit side. The reference integrates visibility along each ray, so a shadow
 // boundary crossing a particle shades it by how much of its mass lies past the boundary: smooth
-// from pixel to pixel, never a cut through the billboard (seed 001 §III asks for the same). Taps at
+// from pixel to pixel, never a cut through the billboard (Bass and Anderson §III asks for the same). Taps at
 // both ends and the shading point; where they disagree, the crossing is found by bisection and the
 // boundary treated as locally flat, so the lit fraction is an erf ratio.
 float segmentVisibility(int i, vec3 origin, vec3 dir, Chord c, float radius, float lo, float hi, float u) {

@@ -10,7 +10,7 @@
 // The odd cubic and even quartic terms follow a dense trail's sunward rim, which brightens sharply.
 // SPLAT_CONSTANT: the centre ray alone, for particles a few pixels wide (10⁶ of them).
 // LIGHTING_EXACT shades each ray as particles.frag shades a pixel; otherwise light is taken at the
-// ray's shading point: phase, the mesh shadow map with seed 001's smooth weighting over the
+// ray's shading point: phase, the mesh shadow map with Bass and Anderson's smooth weighting over the
 // particle's depth, and the slices' transmittance integrated over the layer.
 #include "media/bindings.glsl"
 layout(local_size_x = 64) in;

@@ -1,9 +1,9 @@
 #version 450 core
 // Fast particles: per fragment the kernel's optical depth along the pixel's ray, clipped at the
-// opaque surface (and at the eye with MEDIA_EYE_INSIDE), from seed 004's pre-integrated kernel
-// table; the source from the lighting pass's fit (particle_lighting.comp), with the sun's phase
-// function and the lamps (MEDIA_FRAGMENT_LAMPS) at this pixel's own ray. Output (α·J, α) blends
-// premultiplied, exactly as particles.frag's does.
+// opaque surface (and at the eye with MEDIA_EYE_INSIDE), from the pre-integrated kernel
+// table (the sheet-buffer splatting paper); the source from the lighting pass's fit (particle_lighting.comp),
+// with the sun's phase function and the lamps (MEDIA_FRAGMENT_LAMPS) at this pixel's own ray. Output (α·J, α)
+// blends premultiplied, exactly as particles.frag's does.
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"

@@ -1,5 +1,5 @@
 #version 450 core
-// Raymarch mode (seed 002, raymarch/raymarch_pass.cpp): the voxel grid marched per texel of the
+// Raymarch mode (after Jendersie, raymarch/raymarch_pass.cpp): the voxel grid marched per texel of the
 // media target. Samples sit a voxel apart, the first at a per-pixel jittered offset (fine noise,
 // no banding); the march stops at the scene depth (a mesh inside the cloud needs no special case)
 // and once the view transmittance is below 1e-3. Each sample is lit as lighting.glsl lights a

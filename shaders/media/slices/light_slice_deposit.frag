@@ -1,6 +1,6 @@
 #version 450 core
 // Light-slice deposit: the optical depth one particle puts between two slice planes along the light
-// ray through this texel, from seed 004's pre-integrated kernel table (one fetch per plane), added
+// ray through this texel, from the pre-integrated kernel table (one fetch per plane), added
 // into the slab's layer. Optical depth adds, so the order pieces arrive in cannot change the sum.
 // Works in the light's view space, where the light looks down −Z from the origin (perspective) or
 // rays run down −Z from z = 0 (orthographic), so view depth is −z.

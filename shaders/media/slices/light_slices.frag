@@ -1,5 +1,5 @@
 #version 450 core
-// Light slices (DESIGN.md §3): for the light ray through this texel, the particle's optical depth
+// Light slices (docs/design.md §3): for the light ray through this texel, the particle's optical depth
 // from the light up to each slice plane, in closed form, added into 4 slices per RGBA32F target.
 // Additive blending: no sort, and the order particles arrive in cannot change the result.
 #include "common/math.glsl"

@@ -1,6 +1,7 @@
 #version 450 core
-// Offscreen media (seed 002): the scene depth each reduced-resolution texel used, so the upsampler
-// can tell where a texel does not represent the full-resolution pixel (media/media_upsample_pass.cpp).
+// Offscreen media (Jendersie's offscreen particles): the scene depth each reduced-resolution texel used, so the
+// upsampler can tell where a texel does not represent the full-resolution pixel
+// (media/media_upsample_pass.cpp).
 #include "media/bindings.glsl"
 #include "common/frame.glsl"
 

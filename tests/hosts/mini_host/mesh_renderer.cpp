@@ -12,7 +12,6 @@ gpu::ProgramDesc miniProgram(const char* vertex, const char* fragment) {
     desc.vertex = vertex;
     desc.fragment = fragment;
     desc.folder = MINI_HOST_SHADER_DIR;
-    desc.includePath = {MINI_HOST_NIMBUS_SHADER_DIR};
     return desc;
 }
 

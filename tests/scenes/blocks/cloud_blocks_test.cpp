@@ -1,4 +1,4 @@
-// Blocks mode (seed 000) on content/scenes/cloud.gltf — 500 large particles crossed by a thin red
+// Blocks mode (Umenhoffer and Szirmay-Kalos) on content/scenes/cloud.gltf — 500 large particles crossed by a thin red
 // wing — against the CPU reference: the whole image, the band of pixels where the wing cuts the
 // cloud (the seam billboards leave), where block_shading=seam shades exactly, a fixed block count,
 // and repeatability.

@@ -1,6 +1,8 @@
 #include "editor_test_support.h"
 
+#include <fcntl.h>
 #include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -8,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+extern char** environ;
 
 namespace nimbus::test {
 namespace {
@@ -76,6 +80,52 @@ assets::RgbImage renderWithSandbox(const TempFolder& dir, const std::filesystem:
                                                              "--time", std::to_string(time), "--out", out.string()});
     if (r.exitCode != 0) throw std::runtime_error("sandbox render failed: " + r.err);
     return assets::readImage(out);
+}
+
+RunningEditor::RunningEditor(const TempFolder& dir, const std::filesystem::path& scene, const std::string& viewportSize)
+    : errFile_(dir / "editor.err") {
+    std::vector<std::string> args = {"/usr/bin/env", "DISPLAY=" + display(), "XDG_CONFIG_HOME=" + (dir / "config").string(),
+                                     sandboxExecutable().string(), "edit", scene.string(), "--viewport-size", viewportSize};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const std::string out = (dir / "editor.out").string();
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errFile_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    pid_t pid = -1;
+    const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (spawned != 0) throw std::runtime_error("cannot start the editor");
+    pid_ = pid;
+}
+
+RunningEditor::~RunningEditor() {
+    if (pid_ <= 0) return;
+    kill(pid_, SIGTERM);
+    waitpid(pid_, nullptr, 0);
+}
+
+bool RunningEditor::running() {
+    if (pid_ <= 0) return false;
+    if (waitpid(pid_, nullptr, WNOHANG) == 0) return true;
+    pid_ = -1;
+    return false;
+}
+
+std::string RunningEditor::err() const {
+    std::ifstream in(errFile_);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+ProcessResult xdotool(const std::vector<std::string>& args, int seconds) {
+    std::vector<std::string> all = {std::to_string(seconds), "/usr/bin/env", "DISPLAY=" + display(), NIMBUS_XDOTOOL};
+    all.insert(all.end(), args.begin(), args.end());
+    return runProcess("/usr/bin/timeout", all);
 }
 
 double numberAfter(const std::string& text, const std::string& key) {

@@ -1,4 +1,4 @@
-// `particles` mode against the reference renderer (DESIGN.md §6) on every content scene with media,
+// `particles` mode against the reference renderer (docs/design.md §6) on every content scene with media,
 // at the time tools/scenegen/make_scenes.py renders it (TIMES), in each quality tier against one
 // reference render: rel-RMSE = RMSE of linear RGB / mean luminance of the reference
 // (image_metrics.h), and no non-finite pixel. The exact tier's bound per scene is about 1.5 × what

@@ -1,6 +1,6 @@
-// Offscreen media (seed 002, media_depth_used_pass.cpp + shaders/common/upsample.glsl in compose): `particles` at
-// media_scale 0.5 and 0.25 on cloud.gltf, where a wing crosses the cloud, against the same frame at
-// full resolution and against the reference.
+// Offscreen media (Jendersie's offscreen particles, media_depth_used_pass.cpp + shaders/common/upsample.glsl in
+// compose): `particles` at media_scale 0.5 and 0.25 on cloud.gltf, where a wing crosses the cloud, against the
+// same frame at full resolution and against the reference.
 //   - The upsampled frame stays close to the full-resolution one (rel-RMSE bound per scale).
 //   - Depth awareness pays: with the edge test switched off (upsample_threshold=10 makes every
 //     texel match, i.e. plain bilinear), smoke bleeds over the wing's silhouette and the error

@@ -1,4 +1,4 @@
-// `raymarch` mode (seed 002) against the reference on every content scene, and finite on every
+// `raymarch` mode (Schpok et al., Jendersie) against the reference on every content scene, and finite on every
 // hard case. Bounds are 1.5 × the rel-RMSE measured when they were set, at most the 10%.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// The edge of a mesh's shadow across a billboard is continuous (issue acceptance; DESIGN.md §3
-// "never a hard cut through a billboard", seed 001 §III). The scene
+// The edge of a mesh's shadow across a billboard is continuous (issue acceptance; docs/design.md §3
+// "never a hard cut through a billboard", Bass and Anderson §III). The scene
 // (tests/data/media_scenes/shadow_edge.gltf) is one particle of radius 2 m at the origin; a plate
 // above it covers x < 0 and the sun shines straight down, so the shadow's edge is the plane x = 0,
 // cutting the particle in half. The camera looks along (-1, 0, -1): each camera ray crosses that

@@ -100,5 +100,34 @@ TEST_F(EditorStateTest, BadViewSettingsAreRefused) {
     EXPECT_EQ(state.view().mode, "blocks");
 }
 
+// A long session under a small history limit: the history stays within it, says what it dropped,
+// and undo still walks back through every kept edit to the oldest kept state.
+TEST(EditorStateHistory, ALongSessionKeepsTheHistoryWithinItsLimit) {
+    constexpr std::size_t kLimit = 48 * 1024;
+    EditorState state({}, kLimit);
+    state.open(kContent / "scenes/smoke.gltf");
+    state.selectByName("chimney");
+    const auto translationAfter = [](int edit) { return Json::array({0.25 * edit, 0.0, 0.0}); };
+    constexpr int kEdits = 40;
+    std::optional<std::string> firstNotice;
+    for (int i = 1; i <= kEdits; ++i) {
+        state.setOnSelected("translation", translationAfter(i));
+        EXPECT_LE(state.history().bytes(), kLimit);
+        if (auto notice = state.takeNotice(); notice && !firstNotice) firstNotice = notice;
+    }
+    ASSERT_TRUE(firstNotice) << "the history never reached its limit";
+    EXPECT_NE(firstNotice->find("undo history at its 48 KiB limit: dropped the oldest 1 step"), std::string::npos) << *firstNotice;
+    const History& h = state.history();
+    ASSERT_GT(h.droppedSinceClear(), 0u);
+    EXPECT_EQ(h.droppedSinceClear() + h.size(), static_cast<std::size_t>(kEdits));
+    const int chimney = findNode(state.json(), "chimney");
+    int undone = 0;
+    while (state.undo()) ++undone;
+    EXPECT_EQ(undone, static_cast<int>(h.size()));
+    EXPECT_EQ(getField(state.json(), chimney, "translation"), translationAfter(static_cast<int>(h.droppedSinceClear())));
+    EXPECT_TRUE(state.dirty());  // the file's own state was dropped: nothing here is what is on disk
+    EXPECT_EQ(state.selected(), chimney);
+}
+
 }  // namespace
 }  // namespace nimbus::sandbox::editor

@@ -1,9 +1,11 @@
 // Shader loading (gpu/shader_program.h): #include once per stage, cycles refused, defines injected
-// after #version without shifting line numbers, and driver logs mapped back to file:line.
+// after #version without shifting line numbers, driver logs mapped back to file:line, and the
+// built-in shaders the same files as the source tree's shaders/ folder.
 #include "nimbus/gpu/shader_program.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -12,7 +14,7 @@
 
 #include "gl_test_context.h"
 #include "nimbus/base/error.h"
-#include "nimbus/base/paths.h"
+#include "nimbus/gpu/builtin_shaders.h"
 
 namespace nimbus::gpu {
 namespace {
@@ -82,17 +84,56 @@ TEST(PreprocessShader, RefusesMissingFilesAndMissingVersion) {
     EXPECT_NE(message.find("absent.vert"), std::string::npos) << message;
 }
 
+// The source tree's shaders/, which the library builds in.
+const std::filesystem::path kShaderSources = std::filesystem::path(NIMBUS_CONTENT_DIR_FOR_TESTS).parent_path() / "shaders";
+
+std::string fileText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 TEST(PreprocessShader, EveryEngineShaderResolves) {
-    const std::filesystem::path folder = shaderDirectory();
     int stages = 0;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kShaderSources)) {
         const std::string ext = entry.path().extension().string();
         if (ext != ".vert" && ext != ".frag" && ext != ".geom" && ext != ".comp") continue;
-        const std::string file = std::filesystem::relative(entry.path(), folder).generic_string();
-        EXPECT_NO_THROW(preprocessShader(folder, file, {})) << file;
+        const std::string file = std::filesystem::relative(entry.path(), kShaderSources).generic_string();
+        EXPECT_NO_THROW(preprocessShader(kShaderSources, file, {})) << file;
+        EXPECT_NO_THROW(preprocessShader({}, file, {})) << file << " (built in)";
         ++stages;
     }
     EXPECT_GE(stages, 6);  // opaque, shadow_depth, compose + fullscreen at least
+}
+
+// Every file of shaders/ is built in as it is on disk, and nothing else: the build regenerates the table.
+TEST(BuiltInShaders, AreTheSourceTreesShadersByteForByte) {
+    std::vector<std::string> onDisk;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(kShaderSources))
+        if (entry.is_regular_file()) onDisk.push_back(std::filesystem::relative(entry.path(), kShaderSources).generic_string());
+    std::sort(onDisk.begin(), onDisk.end());
+    std::vector<std::string> builtIn;
+    for (const BuiltInShader& shader : builtInShaders()) builtIn.emplace_back(shader.path);
+    EXPECT_TRUE(std::is_sorted(builtIn.begin(), builtIn.end()));
+    EXPECT_EQ(builtIn, onDisk);
+    for (const std::string& file : onDisk) {
+        const BuiltInShader* shader = builtInShader(file);
+        ASSERT_NE(shader, nullptr) << file;
+        EXPECT_EQ(shader->text, fileText(kShaderSources / file)) << file;
+    }
+    EXPECT_EQ(builtInShader("media/absent.glsl"), nullptr);
+}
+
+// A host's own folder comes first, then its include path, then the built-in shaders: its shader
+// includes the plugin's host include with no folder of Nimbus's on disk.
+TEST(PreprocessShader, AHostsShaderIncludesTheBuiltInPluginFiles) {
+    const PreprocessedSource source = preprocessShader(fixture("host_include"), "host.frag", {"MEDIA_LIGHT_TRANSMITTANCE"});
+    EXPECT_NE(std::find(source.files.begin(), source.files.end(), "media/host/light_transmittance.glsl"), source.files.end());
+    EXPECT_NE(source.text.find("mediaTransmittance"), std::string::npos);
+    const std::string message = messageOf([&] { preprocessShader(fixture("host_include"), "absent.frag", {}); });
+    EXPECT_NE(message.find("absent.frag (searched " + fixture("host_include").string() + ", the built-in shaders)"), std::string::npos)
+        << message;
 }
 
 TEST(MapShaderLog, RewritesMesaSourceNumbersToFileNames) {

@@ -22,7 +22,7 @@ CameraRay cameraRay(const CameraFrame& f, int x, int y) {
     const double ndcY = 1.0 - 2.0 * (y + 0.5) / f.height;
     CameraRay ray;
     if (f.params.projection == assets::Projection::Orthographic) {
-        // The image aspect follows the output size (DESIGN.md §4), as in render::makeView: ymag·W/H wide.
+        // The image aspect follows the output size (docs/design.md §4), as in render::makeView: ymag·W/H wide.
         const double aspect = static_cast<double>(f.width) / static_cast<double>(f.height);
         ray.origin = f.position + f.right * (f.params.ymag * aspect * ndcX) + f.up * (f.params.ymag * ndcY);
         ray.direction = f.forward;

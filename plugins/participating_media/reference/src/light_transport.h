@@ -1,5 +1,5 @@
 #pragma once
-// Light arriving at points of the scene (DESIGN.md §2): per light, the irradiance E_l
+// Light arriving at points of the scene (docs/design.md §2): per light, the irradiance E_l
 // (assets::sampleLight) × mesh visibility V_l (Embree) × medium transmittance T_l (closed form over the
 // particles the BVH finds and the volumes). Used for the in-scattering source at medium points and
 // for mesh shading. `sourceAmbient` is what every medium point scatters unshadowed: the ambient in

@@ -1,5 +1,5 @@
 #pragma once
-// What the multiple-scattering model adds to the exact single-scattering quadrature (DESIGN.md §2,
+// What the multiple-scattering model adds to the exact single-scattering quadrature (docs/design.md §2,
 // `"scattering": "multiple"`), as an unbiased Monte Carlo estimate along one camera ray:
 //   - light of every punctual light scattered two or more times,
 //   - the environment (ambient radiance arriving from every direction where no mesh is in the
@@ -15,7 +15,7 @@
 //     environment along each sampled direction with that flight's exact transmittance;
 //   - Russian roulette once a path's weight is below kRouletteWeight (survival ∝ its weight), and
 //     from vertex kRouletteCap on at most 0.99, so a path at albedo 1 ends too; both without bias.
-// Mesh-reflected light is left out: a flight that meets a mesh ends there (DESIGN.md §2).
+// Mesh-reflected light is left out: a flight that meets a mesh ends there (docs/design.md §2).
 //
 // Does not: add the camera ray's own single scattering or emission (the quadrature does), or fog
 // (the caller fogs at the first collision's distance).

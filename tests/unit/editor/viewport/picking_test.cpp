@@ -108,6 +108,19 @@ TEST(Pick, NearestOfOverlappingTargets) {
     EXPECT_EQ(pick(ray, {}), -1);
 }
 
+// Looking through a scene camera, the eye sits inside that camera's icon: a click picks what it sees.
+TEST(Pick, TheCameraLookedThroughIsNotPicked) {
+    const Ray ray{{0.0, 8.5, 12.5}, glm::normalize(glm::dvec3(0.0, -4.5, -12.5))};
+    PickTarget eye;
+    eye.id = 4;
+    eye.sphere = true;
+    eye.centre = ray.origin;
+    eye.radius = 0.004;
+    const std::vector<PickTarget> targets = {eye, {1, box({-3.6, 2.2, -2.6}, {3.6, 5.8, 2.6})}};
+    EXPECT_EQ(pick(ray, targets), 1);
+    EXPECT_EQ(pick({ray.origin, {0.0, 1.0, 0.0}}, targets), -1);
+}
+
 TEST(TransformBox, CornersThroughTheMatrix) {
     const Aabb unit = box({-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0});
     glm::dmat4 world = glm::translate(glm::dmat4(1.0), glm::dvec3(10.0, 0.0, 0.0));

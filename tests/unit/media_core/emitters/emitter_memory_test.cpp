@@ -1,4 +1,4 @@
-// Tests that the emitter simulation's memory stays flat however long it runs (seed 003 §9's
+// Tests that the emitter simulation's memory stays flat however long it runs (McReynolds and Blythe §9's
 // particle management: dead particles are recycled, the pool never grows).
 #include <gtest/gtest.h>
 

@@ -143,7 +143,7 @@ TEST(Optics, PhaseFunctionsAreNormalised) {
     EXPECT_NEAR(static_cast<double>(rayleighTotal), 1.0, 1e-14);
     EXPECT_NEAR(henyeyGreenstein(0.3, 0.0), 1.0 / (4.0 * kPi), 1e-16);
     EXPECT_GT(henyeyGreenstein(1.0, 0.6), henyeyGreenstein(-1.0, 0.6));  // g > 0 scatters forward
-    EXPECT_DOUBLE_EQ(rayleigh(1.0), rayleigh(-1.0));                     // forward = backward (seed 004)
+    EXPECT_DOUBLE_EQ(rayleigh(1.0), rayleigh(-1.0));                     // forward = backward (Rayleigh)
     EXPECT_DOUBLE_EQ(rayleigh(1.0), 2.0 * rayleigh(0.0));
     EXPECT_DOUBLE_EQ(phaseValue(PhaseFunction::Rayleigh, 0.9, 0.2), rayleigh(0.2));
     EXPECT_DOUBLE_EQ(phaseValue(PhaseFunction::HenyeyGreenstein, 0.9, 0.2), henyeyGreenstein(0.2, 0.9));

@@ -6,7 +6,7 @@
 //   r = front = min over those particles of the entry of its mass interval, −g = back = max of exits,
 // where a particle's mass interval is the ±√3·s (s = R/3) stretch around the closest point, clipped
 // to its chord and to the ray start (block_impostors.frag: a uniform density over it has the
-// Gaussian's mean and variance, which is what seed 000 §2.4's scaling assumes).
+// Gaussian's mean and variance, which is what Umenhoffer and Szirmay-Kalos §2.4's scaling assumes).
 #include <gtest/gtest.h>
 
 #include <algorithm>

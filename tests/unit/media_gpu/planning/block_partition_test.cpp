@@ -230,7 +230,7 @@ TEST(BlockPartition, BlocksAreFarMoreCompactThanARandomSplit) {
 // Morton chunks of equal size (the first partition) failed this: they straddle the jumps of the
 // Z-order curve, and one block of 22 held members from both ends of the cloud (bounding radius
 // 1.32× the cloud's). A block whose impostor spans the cloud has the whole cloud's [front, back]
-// interval, which defeats the uniform-density scaling of seed 000 §2.4.
+// interval, which defeats the uniform-density scaling of Umenhoffer and Szirmay-Kalos §2.4.
 TEST(BlockPartition, EveryBlocksBoundingRadiusIsWellBelowTheClouds) {
     for (unsigned seed : {5u, 6u, 7u}) {
         const ParticleSet set = blobCloud(500, seed);

@@ -3,7 +3,7 @@
 // KHR_lights_punctual lights, node animation) plus the raw extension objects that plugins parse.
 // Everything is validated at load time: a Scene that exists is complete and in range.
 //
-// Does not: keep skins, morph targets or PBR terms beyond baseColor (DESIGN.md §2 shades Lambert).
+// Does not: keep skins, morph targets or PBR terms beyond baseColor (docs/design.md §2 shades Lambert).
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -16,7 +16,7 @@
 
 namespace nimbus::assets {
 
-// The name of our glTF extension (DESIGN.md §4), on the root and on nodes.
+// The name of our glTF extension (docs/design.md §4), on the root and on nodes.
 inline constexpr const char* kMediaExtension = "NIMBUS_participating_media";
 
 struct Image {
@@ -122,8 +122,8 @@ struct Animation {
     std::vector<AnimationChannel> channels;
 };
 
-// The root NIMBUS_participating_media values the engine itself needs (DESIGN.md §4).
-// Distance fog (scene-format.md §2.1, seed 003): what is seen at distance z along a ray is
+// The root NIMBUS_participating_media values the engine itself needs (docs/design.md §4).
+// Distance fog (scene-format.md §2.1, McReynolds and Blythe §8): what is seen at distance z along a ray is
 // f·L + (1 − f)·color, with f from the mode (assets/fog.h).
 enum class FogMode { None, Exp, Exp2, Linear, Height };
 

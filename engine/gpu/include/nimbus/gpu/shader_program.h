@@ -1,7 +1,7 @@
 #pragma once
-// GLSL programs built from files under shaders/. Sources may `#include "path.glsl"` (relative to
-// the shaders folder, each file included once per stage); compile errors are reported as
-// file:line with the original file names.
+// GLSL programs built from Nimbus's shaders (built into the library: builtin_shaders.h) or a host's
+// own folder. Sources may `#include "path.glsl"` (relative to the shaders folder, each file included
+// once per stage); compile errors are reported as file:line with the original file names.
 //
 // Does not: cache binaries, or hot-reload (the editor may add that later).
 #include <filesystem>
@@ -18,9 +18,10 @@ struct ProgramDesc {
     std::string fragment;
     std::string compute;
     std::vector<std::string> defines;  // "NAME" or "NAME VALUE", inserted after #version
-    std::filesystem::path folder;      // empty means nimbus::shaderDirectory()
-    // Further folders #include searches after `folder`, in order (a host's shaders including the
-    // plugin's "media/host/..." files from nimbus::shaderDirectory()).
+    // Empty: Nimbus's built-in shaders ($NIMBUS_SHADER_DIR instead when set).
+    std::filesystem::path folder;
+    // Further folders searched after `folder`, in order. The built-in shaders come last, so a host's
+    // own shader includes the plugin's "media/host/..." files with nothing more.
     std::vector<std::filesystem::path> includePath;
 };
 
@@ -31,6 +32,7 @@ struct PreprocessedSource {
 };
 
 // Resolves #include and injects defines; throws nimbus::SystemError for a missing file or a cycle.
+// `folder` as ProgramDesc::folder: empty is the built-in shaders, searched last otherwise.
 PreprocessedSource preprocessShader(const std::filesystem::path& folder, const std::string& file,
                                     const std::vector<std::string>& defines,
                                     const std::vector<std::filesystem::path>& includePath = {});

@@ -1,5 +1,5 @@
 #pragma once
-// The frame of DESIGN.md §3 as a frame graph: mesh shadow maps → opaque (+ scene depth) →
+// The frame of docs/design.md §3 as a frame graph: mesh shadow maps → opaque (+ scene depth) →
 // extensions (the media plugin) → compose into a linear RGBA32F output. Extensions add their own
 // passes before the opaque pass (e.g. light slices that shadow meshes) and after it (the medium).
 //

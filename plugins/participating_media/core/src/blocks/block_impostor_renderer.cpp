@@ -1,4 +1,4 @@
-// Depth impostors of blocks (seed 000 §2.1): every particle drawn once into its block's atlas tile,
+// Depth impostors of blocks (Umenhoffer and Szirmay-Kalos §2.1): every particle drawn once into its block's atlas tile,
 // blending MIN for the front/back depths and ADD for optical depth in the same pass.
 #include "blocks/block_impostor_renderer.h"
 

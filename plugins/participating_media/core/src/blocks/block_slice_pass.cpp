@@ -1,4 +1,4 @@
-// Blocks mode, light side (seed 000 §2.2): in each light view, every block spread over the slices
+// Blocks mode, light side (Umenhoffer and Szirmay-Kalos §2.2): in each light view, every block spread over the slices
 // by its depth profile from the view's light impostors (block_slices.frag).
 #include <glm/gtc/type_ptr.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
-// `blocks` (Harris and Lastra's particle hierarchies with depth impostors, seed 000 of the
-// design): the particles grouped into blocks, each block's depth impostor rendered for the camera
-// and every light view, composited back to front, with the blocks a mesh reaches cut at it.
+// `blocks` (Umenhoffer and Szirmay-Kalos's particle hierarchies with depth impostors): the particles grouped
+// into blocks, each block's depth impostor rendered for the camera and every light view, composited back to
+// front, with the blocks a mesh reaches cut at it.
 #include <cstdint>
 
 #include "nimbus/base/quality_tier.h"

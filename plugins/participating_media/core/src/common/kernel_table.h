@@ -1,8 +1,9 @@
 #pragma once
-// Seed 004's pre-integrated kernel segments: the optical depth of one particle of unit radius and
-// unit peak extinction along a ray at impact parameter β (radii), from where the ray enters the
-// sphere up to μ radii past its closest point. The fast splats (shaders/media/common/kernel_table.glsl)
-// read it bilinearly, so a fragment's opacity costs one fetch instead of two erf evaluations.
+// Pre-integrated kernel segments (the sheet-buffer splatting paper, docs/references.md): the optical depth of
+// one particle of unit radius and unit peak extinction along a ray at impact parameter β (radii), from where
+// the ray enters the sphere up to μ radii past its closest point. The fast splats
+// (shaders/media/common/kernel_table.glsl) read it bilinearly, so a fragment's opacity costs one fetch instead
+// of two erf evaluations.
 #include <vector>
 
 #include "nimbus/gpu/gl_objects.h"

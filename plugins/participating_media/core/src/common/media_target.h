@@ -4,7 +4,7 @@
 
 namespace nimbus::media {
 
-// The media target of one frame: full resolution, or reduced (seed 002's offscreen particles) and
+// The media target of one frame: full resolution, or reduced (Jendersie's offscreen particles) and
 // upsampled afterwards. A mode pass renders into `size`; texel i stands for full-resolution
 // position (i + 0.5) · fullResScale.
 struct MediaTarget {

@@ -1,6 +1,7 @@
-// The presets of seed 003 (smoke puffs, steam, vapour trails, fire, explosions) as full emitter
-// descriptions. Values are chosen for metre-scale scenes lit by the default 3 lux sun (a white
-// Lambert surface at radiance ≈ 1): docs/scene-format.md lists them with the medium to pair them with.
+// The presets of McReynolds and Blythe's natural phenomena (smoke puffs, steam, vapour trails, fire,
+// explosions) as full emitter descriptions. Values are chosen for metre-scale scenes lit by the default 3 lux
+// sun (a white Lambert surface at radiance ≈ 1): docs/scene-format.md lists them with the medium to pair them
+// with.
 #include <numbers>
 
 #include "nimbus/media/emitter_desc.h"
@@ -26,7 +27,7 @@ Curve<glm::vec3> colors(std::initializer_list<std::pair<float, glm::vec3>> keys)
     return c;
 }
 
-// Grey puffs that rise slowly, grow 3× and fade in then out (seed 003 §1).
+// Grey puffs that rise slowly, grow 3× and fade in then out (McReynolds and Blythe §1).
 EmitterDesc smoke() {
     EmitterDesc d;
     d.preset = EmitterPreset::Smoke;
@@ -72,7 +73,7 @@ EmitterDesc steam() {
     return d;
 }
 
-// Left behind by a moving node (seed 003 §2): particles stay where they were born, widen slowly
+// Left behind by a moving node (McReynolds and Blythe §2): particles stay where they were born, widen slowly
 // and fade over ten seconds. The spacing of the trail is (node speed) / rate.
 EmitterDesc vaporTrail() {
     EmitterDesc d;
@@ -93,7 +94,7 @@ EmitterDesc vaporTrail() {
     return d;
 }
 
-// Small, short-lived, emissive particles rising fast; orange at birth, dark red as they die (seed 003 §3).
+// Small, short-lived, emissive particles rising fast; orange at birth, dark red as they die (McReynolds and Blythe §3).
 EmitterDesc fire() {
     EmitterDesc d;
     d.preset = EmitterPreset::Fire;
@@ -117,7 +118,7 @@ EmitterDesc fire() {
     return d;
 }
 
-// One burst (seed 003 §4): a fireball that expands fast, glows for about half a second, then cools
+// One burst (McReynolds and Blythe §4): a fireball that expands fast, glows for about half a second, then cools
 // into dark smoke that rises as a column (buoyancy against drag) and fades.
 EmitterDesc explosion() {
     EmitterDesc d;

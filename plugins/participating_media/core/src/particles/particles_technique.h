@@ -9,7 +9,7 @@
 
 namespace nimbus::media {
 
-// Where the particles are lit (the source J of DESIGN.md §2), in the order of the lighting words.
+// Where the particles are lit (the source J of docs/design.md §2), in the order of the lighting words.
 enum class ParticleLighting : std::uint8_t {
     Fragment,       // per fragment, with every correction: the exact tier
     Particle,       // per particle at nine rays through its billboard, J fitted across it; light

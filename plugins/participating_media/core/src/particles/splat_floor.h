@@ -1,5 +1,5 @@
 #pragma once
-// The splat floor (DESIGN.md §6, `sandbox render --floor`): how long this GL implementation takes to
+// The splat floor (docs/design.md §6, `sandbox render --floor`): how long this GL implementation takes to
 // blend every particle's full-resolution billboard once, with a trivial shader, into an RGBA32F
 // target the size of the image. A mode's frame time divided by it says how far the frame is from
 // what any splatting renderer pays just to touch the particles' pixels.

@@ -1,5 +1,5 @@
 #pragma once
-// Blocks mode planning: where each block's impostor tile lies in a view's atlas (seed 000 §2.1).
+// Blocks mode planning: where each block's impostor tile lies in a view's atlas (Umenhoffer and Szirmay-Kalos §2.1).
 #include <cstdint>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The `raymarch` pass (seed 002; shaders/media/raymarch/raymarch.*): the voxel grid marched per
+// The `raymarch` pass (after Jendersie; shaders/media/raymarch/raymarch.*): the voxel grid marched per
 // pixel of the media target from a jittered start, up to the scene depth, until the view
 // transmittance is spent. Light comes from the light slices and the mesh shadow maps.
 #include <memory>

@@ -1,5 +1,5 @@
 #pragma once
-// `raymarch` (Schpok et al., after seed 002 of the design): the particles voxelised on the CPU each
+// `raymarch` (Schpok et al., and Jendersie's ray-marched clouds): the particles voxelised on the CPU each
 // frame and the grid ray-marched per pixel of the media target, lit through the light slices.
 #include "nimbus/base/quality_tier.h"
 #include "nimbus/media/technique.h"

@@ -1,5 +1,5 @@
 #pragma once
-// `raymarch` mode's grid (seed 002): the medium sampled at voxel centres, σ_t with the σ-weighted
+// `raymarch` mode's grid (Jendersie): the medium sampled at voxel centres, σ_t with the σ-weighted
 // albedo, emission and phase asymmetry, for the GPU to interpolate trilinearly. Particles add their
 // kernels at the centres; a constant volume adds its σ times the share of the voxel it covers, so
 // its faces land between voxel centres where they lie rather than on the nearest one. Noise volumes

@@ -9,7 +9,7 @@
 
 namespace nimbus::media {
 
-// Light slices (DESIGN.md §3 light-slice system): every slice view renders all particles once,
+// Light slices (docs/design.md §3 light-slice system): every slice view renders all particles once,
 // additively, into ceil(K/4) layers of one RGBA32F array.
 class LightSlicePass {
 public:

@@ -1,6 +1,6 @@
-// Offscreen media (seed 002): the media pass runs at ½ or ¼ resolution; this records the view depth
-// each reduced texel used (shaders/media/upsample/depth_used.frag), which the compose pass needs to upsample
-// the media target with depth awareness (shaders/common/upsample.glsl).
+// Offscreen media (Jendersie's offscreen particles): the media pass runs at ½ or ¼ resolution; this records the
+// view depth each reduced texel used (shaders/media/upsample/depth_used.frag), which the compose pass needs to
+// upsample the media target with depth awareness (shaders/common/upsample.glsl).
 #include "upsample/media_depth_used_pass.h"
 
 #include "common/frame_blocks.h"

@@ -8,7 +8,7 @@
 
 namespace nimbus::media {
 
-// Seed 002: the view depth each reduced texel of the media target used, which the compose pass's
+// Jendersie's offscreen particles: the view depth each reduced texel of the media target used, which the compose pass's
 // depth-aware upsampling compares with each full-resolution pixel's.
 class MediaDepthUsedPass {
 public:

@@ -1,5 +1,5 @@
 #pragma once
-// Groups particles into blocks (seed 000 §2) by recursive median bisection: the particles of a
+// Groups particles into blocks (Umenhoffer and Szirmay-Kalos §2) by recursive median bisection: the particles of a
 // range of blocks are split at the median of their longest axis, in the ratio of the block counts
 // on either side, until each range is one block.
 //
@@ -12,7 +12,7 @@
 //
 // Block count: fixed by the caller (`--set blocks=N`, a scene's render.blocks) or automatic. The
 // seed's cost model — simulation and colour work b + N/b for N particles in blocks of b — is
-// smallest at b = √N, i.e. √N blocks. A block's assumed density profile (seed 000 §2.4) errs where
+// smallest at b = √N, i.e. √N blocks. A block's assumed density profile (Umenhoffer and Szirmay-Kalos §2.4) errs where
 // a mesh cuts it, and less the smaller it is, so the cost-model count is round(2√N), clamped to
 // [1, 2048] (docs/design-notes.md).
 //

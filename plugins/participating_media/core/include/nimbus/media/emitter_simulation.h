@@ -1,5 +1,5 @@
 #pragma once
-// The emitter system's simulation (DESIGN.md §3, seed 003 §9): spawns, moves, ages and recycles the
+// The emitter system's simulation (docs/design.md §3, McReynolds and Blythe §9): spawns, moves, ages and recycles the
 // particles of one emitter, in structure-of-arrays, with a fixed time step and a seeded RNG.
 //
 // Determinism: the state after a sequence of step() calls depends only on the EmitterDesc, the node

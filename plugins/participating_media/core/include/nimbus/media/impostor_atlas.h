@@ -1,6 +1,6 @@
 #pragma once
 // Where each block's depth impostor lives in an atlas texture, and which part of a view it covers.
-// The tile resolution follows the block's size in the view (seed 000: an impostor needs no more
+// The tile resolution follows the block's size in the view (Umenhoffer and Szirmay-Kalos: an impostor needs no more
 // texels than the pixels it covers), times a quality scale.
 #include <limits>
 #include <vector>

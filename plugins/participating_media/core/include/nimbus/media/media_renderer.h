@@ -1,5 +1,5 @@
 #pragma once
-// The participating media in the real-time frame (DESIGN.md §3), through the host contract
+// The participating media in the real-time frame (docs/design.md §3), through the host contract
 // (host.h): before the host's opaque pass it renders the light slices (medium optical depth from
 // each light, which also shadows the meshes); after it, the medium itself in the chosen mode into
 // an offscreen layer the host composes over its scene.

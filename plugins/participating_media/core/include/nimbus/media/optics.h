@@ -1,5 +1,5 @@
 #pragma once
-// The medium's mathematics (DESIGN.md §2), in one place: the truncated Gaussian kernel, the closed-form
+// The medium's mathematics (docs/design.md §2), in one place: the truncated Gaussian kernel, the closed-form
 // optical depth of one particle along a ray segment, transmittance, and the phase functions. The
 // reference renderer calls these; the GLSL in shaders/ mirrors them line for line.
 //

@@ -1,7 +1,7 @@
 #pragma once
 // The medium as the renderers see it: every particle of every medium in the scene, in world space,
 // as structure-of-arrays. Both the reference and the real-time passes read this one set, so they
-// render exactly the same state (DESIGN.md §2).
+// render exactly the same state (docs/design.md §2).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -12,7 +12,7 @@ namespace nimbus::media {
 
 enum class PhaseFunction : std::uint8_t { HenyeyGreenstein = 0, Rayleigh = 1 };
 
-// Optical properties of one medium (the node's "medium" object, DESIGN.md §4).
+// Optical properties of one medium (the node's "medium" object, docs/design.md §4).
 struct Medium {
     float extinction = 1.0f;        // σ, 1/m, > 0
     glm::vec3 albedo{1.0f};         // single-scattering albedo, each in [0, 1]

@@ -1,5 +1,5 @@
 #pragma once
-// How many light slices a medium needs (DESIGN.md §3 "slice count follows from the scene").
+// How many light slices a medium needs (docs/design.md §3 "slice count follows from the scene").
 //
 // Slices hold optical depth at K planes across the medium's depth range from the light; in between,
 // τ is interpolated linearly. Two things make that interpolation wrong: a slice spacing larger than

@@ -1,5 +1,5 @@
 #pragma once
-// The media a glTF scene declares: each node's "NIMBUS_participating_media" object (DESIGN.md §4),
+// The media a glTF scene declares: each node's "NIMBUS_participating_media" object (docs/design.md §4),
 // parsed and validated, and turned into world-space particles for a given time.
 //
 // Node object keys: "medium" (required), "particles" (a static cloud in the node's local frame),

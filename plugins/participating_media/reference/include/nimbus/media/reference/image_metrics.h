@@ -1,6 +1,6 @@
 #pragma once
 // How far image A is from image B (usually a real-time frame against the reference): the numbers
-// `sandbox compare` prints (DESIGN.md §5, §6).
+// `sandbox compare` prints (docs/design.md §5, §6).
 //
 //   rel_rmse  = sqrt(mean over pixels and RGB channels of (A - B)²) / mean Rec.709 luminance of B
 //               (linear values; +inf when B's mean luminance is 0 and A differs, 0 when equal)

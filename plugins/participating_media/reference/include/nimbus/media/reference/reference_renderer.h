@@ -1,5 +1,5 @@
 #pragma once
-// The judge: a CPU renderer that computes DESIGN.md §2 without bias, one ray per pixel centre.
+// The judge: a CPU renderer that computes docs/design.md §2 without bias, one ray per pixel centre.
 //
 //   L = ∫₀ᵈ T(0,t) Σ_i σ_i ρ_i(x) [ a_i (Σ_l p_i(θ_l) E_l V_l T_l + L_amb) + e_i ] dt + T(0,d) L_s
 //
