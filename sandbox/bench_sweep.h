@@ -38,7 +38,7 @@ struct BenchResult {
 };
 
 struct BenchTiming {
-    int frames = 20;  // timed frames per setting (DESIGN.md §6: at least 20)
+    int frames = 20;  // timed frames per setting (docs/design.md §6: at least 20)
     int warmup = 3;
 };
 

@@ -85,7 +85,7 @@ int run(const ReferenceOptions& o) {
 
 CommandRunner addReferenceCommand(CLI::App& app) {
     auto options = std::make_shared<ReferenceOptions>();
-    auto* cmd = app.add_subcommand("reference", "render the CPU ground truth (DESIGN.md §2) of a scene");
+    auto* cmd = app.add_subcommand("reference", "render the CPU ground truth (docs/design.md §2) of a scene");
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--out", options->out, "output image: .exr holds linear radiance")->required();
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();

@@ -22,7 +22,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "tools", "scenegen"))
 from gltf_builder import Builder, ellipsoid_blob, normalize  # noqa: E402
 
-KERNEL_FALLOFF = 4.5  # rho(r) = exp(-4.5 r^2 / R^2), r < R (DESIGN.md section 2)
+KERNEL_FALLOFF = 4.5  # rho(r) = exp(-4.5 r^2 / R^2), r < R (docs/design.md section 2)
 
 
 def blob(rng, count, centre, radii, particle_radius, falloff=0.6):

@@ -74,7 +74,7 @@ enum class DepthConvention : std::uint8_t {
 struct HostFrame {
     gpu::View camera;           // viewport = camera.width × camera.height
     std::vector<Light> lights;  // at most kMaxHostLights; indices match the host's mesh shader
-    glm::vec3 ambient{0.0f};    // L_amb, radiance every particle scatters (DESIGN.md §2)
+    glm::vec3 ambient{0.0f};    // L_amb, radiance every particle scatters (docs/design.md §2)
     glm::vec3 background{0.0f}; // what rays that hit nothing see
     ScatteringModel scattering = ScatteringModel::Multiple;
     // The scene's distance fog (scene-format.md §2.1): the plugin fogs each particle at its
