@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "gpu/gl_test_context.h"
-#include "nimbus/base/paths.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/shader_program.h"
 
@@ -42,9 +41,9 @@ struct Probe {
 };
 
 Probe runGpu(const NoiseParams& n, bool ellipsoid, const std::vector<glm::vec3>& points) {
-    const gpu::Program program = gpu::compileProgram({.compute = "noise_probe.comp",
-                                                      .folder = std::filesystem::path(NIMBUS_MEDIA_GPU_TEST_SHADERS),
-                                                      .includePath = {shaderDirectory()}});
+    // The probe's own folder first; its #include of media/common/noise.glsl finds the built-in copy.
+    const gpu::Program program =
+        gpu::compileProgram({.compute = "noise_probe.comp", .folder = std::filesystem::path(NIMBUS_MEDIA_GPU_TEST_SHADERS)});
     std::vector<glm::vec4> in;
     for (std::size_t i = 0; i < points.size(); ++i) {
         in.push_back(glm::vec4(points[i], 0.0f));
