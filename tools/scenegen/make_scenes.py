@@ -78,7 +78,7 @@ def demo():
     ground = b.material("ground", (0.85, 0.85, 0.85), roughness=0.9, base_texture=b.texture_info(paving_tex))
     red = b.material("red", (1.0, 1.0, 1.0), roughness=0.8, base_texture=b.texture_info(bricks_tex))
     white = b.material("white", (1.0, 1.0, 1.0), roughness=0.7, base_texture=b.texture_info(facade_tex),
-                       emissive=(1.6, 1.3, 0.8), emissive_texture=b.texture_info(facade_light_tex))
+                       emissive=(1.0, 0.8, 0.5), emissive_texture=b.texture_info(facade_light_tex))
     blue = b.material("blue", (0.56, 0.6, 0.68), metallic=1.0, roughness=1.0,
                       metallic_roughness_texture=b.texture_info(brushed_tex))
     b.node("ground", mesh=b.plane_mesh("ground", 20, 20, ground, uv_scale=4.0))
@@ -299,12 +299,16 @@ def courtyard():
     fence = b.material("fence", (0.9, 0.9, 0.9), metallic=1.0, roughness=0.5, alpha_cutoff=0.5, double_sided=True,
                        base_texture=b.texture_info(lattice_tex))
     painted = b.material("painted", (1.0, 1.0, 1.0), roughness=0.6)
-    sign = b.material("sign", (0.1, 0.1, 0.1), roughness=0.4, emissive=(3.0, 1.2, 0.4))
+    sign = b.material("sign", (0.1, 0.1, 0.1), roughness=0.4, emissive=(1.0, 0.45, 0.15))
     b.node("ground", mesh=b.plane_mesh("ground", 7, 7, ground, uv_scale=1.0))
-    # The wall: its only texture coordinates are TEXCOORD_1 (2 m per repeat of the bricks).
+    # The wall: the bricks read TEXCOORD_1 (2 m per repeat); TEXCOORD_0 (0.5 m per repeat, bricks
+    # four times smaller) is there to be ignored.
     wall_mesh = b.box_mesh("wall", (12.0, 3.0, 0.4), brick, uv_scale=2.0)
     primitive = b.doc["meshes"][wall_mesh]["primitives"][0]
     primitive["attributes"]["TEXCOORD_1"] = primitive["attributes"].pop("TEXCOORD_0")
+    small = b.doc["meshes"][b.box_mesh("unused", (12.0, 3.0, 0.4), brick, uv_scale=0.5)]["primitives"][0]["attributes"]
+    primitive["attributes"]["TEXCOORD_0"] = small["TEXCOORD_0"]
+    b.doc["meshes"].pop()  # only its accessor is kept
     b.node("wall", translation=(0, 1.5, -4.5), mesh=wall_mesh)
     b.node("sign", translation=(-2.5, 2.2, -4.28), mesh=b.box_mesh("sign", (1.6, 0.5, 0.04), sign))
     b.node("fence", translation=(2.2, 1.0, -1.0), rotation=(0, 0.2588190, 0, 0.9659258),

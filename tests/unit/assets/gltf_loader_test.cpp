@@ -235,10 +235,14 @@ TEST(GltfLoader, PlainFileWithoutLightsGetsTheDefaultAmbientOnBlack) {
 }
 
 TEST(GltfLoader, LightsOrOurRootObjectKeepTheAmbientAsWritten) {
-    // lights_cameras.gltf has lights and no NIMBUS object: no default ambient.
+    // lights_cameras.gltf has lights and writes its ambient: that one, no default.
     const Scene lit = loadScene(dataPath("scenes/lights_cameras.gltf"));
     EXPECT_FALSE(lit.environment.defaultAmbient);
-    EXPECT_EQ(lit.environment.ambient, glm::vec3(0.0f));
+    EXPECT_EQ(lit.environment.ambient, glm::vec3(0.01f, 0.02f, 0.03f));
+    // A glTF file with lights and no NIMBUS object (tinygltf's issue-261 has a point light): none either.
+    const Scene plain = loadScene(dataPath("tinygltf/Extensions-overwrite-issue261/issue-261.gltf"));
+    EXPECT_FALSE(plain.environment.defaultAmbient);
+    EXPECT_EQ(plain.environment.ambient, glm::vec3(0.0f));
 }
 
 }  // namespace
