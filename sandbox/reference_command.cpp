@@ -1,4 +1,4 @@
-// sandbox reference SCENE --out F.exr [--size WxH] [--time T] [--camera NAME] [--tolerance E] [--threads N]
+// sandbox reference SCENE --out F.exr [--size WxH] [--time T] [--camera NAME|INDEX] [--tolerance E] [--threads N]
 //                         [--spp N] [--seed S] [--scattering single|multiple]
 // Renders the ground truth of docs/design.md §2 on the CPU (plugins/participating_media/reference) and
 // writes it as linear radiance (.exr; any other format OIIO writes is display-encoded). In the
@@ -90,7 +90,7 @@ CommandRunner addReferenceCommand(CLI::App& app) {
     cmd->add_option("--out", options->out, "output image: .exr holds linear radiance")->required();
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
     cmd->add_option("--time", options->time, "scene time in seconds (animation, emitters)")->capture_default_str();
-    cmd->add_option("--camera", options->camera, "camera (camera or node name); default: the scene's first");
+    cmd->add_option("--camera", options->camera, "camera: a camera or node name, or an index into the file's cameras; default: the scene's first");
     cmd->add_option("--tolerance", options->tolerance, "relative change at which the quadrature stops")->capture_default_str();
     cmd->add_option("--threads", options->threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
     cmd->add_option("--spp", options->spp, "multiple scattering: paths per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 20));

@@ -1,4 +1,4 @@
-// sandbox render SCENE [--out F] [--size WxH] [--mode M] [--quality Q] [--budget-ms B] [--time T] [--camera NAME] [--set K=V]...
+// sandbox render SCENE [--out F] [--size WxH] [--mode M] [--quality Q] [--budget-ms B] [--time T] [--camera NAME|INDEX] [--set K=V]...
 //                      [--stats F.json] [--frames N] [--exposure E] [--tonemap none|filmic]
 // Renders the scene headless (EGL) with the real-time renderer. With --stats it measures: the
 // median frame time over N (≥ 20) GPU-synchronised frames after warm-up, and per-pass medians over
@@ -203,7 +203,7 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--budget-ms", options->budget,
                     "frame budget: walk the quality ladder and keep the lowest-error setting whose frames fit");
     cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));
-    cmd->add_option("--camera", options->camera, "camera (camera or node name); default: the scene's first");
+    cmd->add_option("--camera", options->camera, "camera: a camera or node name, or an index into the file's cameras; default: the scene's first");
     cmd->add_option("--set", options->settings, "KEY=VALUE setting (repeatable; `sandbox settings` lists them)");
     cmd->add_option("--stats", options->stats, "write frame timings and renderer info as JSON");
     cmd->add_option("--frames", options->frames, "timed frames for --stats (at least 20)")->capture_default_str();

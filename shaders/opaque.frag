@@ -1,12 +1,16 @@
 #version 450 core
-// Lambert shading of docs/design.md §4: L_s = baseColor/π · Σ E_l max(0, n·l) V_mesh T_l + baseColor · L_amb.
-// V_mesh from the mesh shadow maps (PCF), T_l = exp(−τ) from the medium's light slices when an
-// extension provides them (1 otherwise).
+// glTF metallic-roughness meshes (docs/scene-format.md §4.1):
+//   L_s = Σ_l f(l, v) E_l max(0, n·l) V_mesh T_l + baseColor · L_amb + emissive
+// f: common/surface_brdf.glsl. V_mesh from the mesh shadow maps (PCF), T_l = exp(−τ) from the
+// medium's light slices when an extension provides them (1 otherwise). ALPHA_MASK cuts the
+// surface where the base colour's alpha is below the cutoff.
 #include "common/math.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
 #include "common/shadows.glsl"
+#include "common/material.glsl"
+#include "common/surface_brdf.glsl"
 // MEDIA_LIGHT_TRANSMITTANCE: the media plugin's light slices (render::MeshShadingInput).
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
 #include "media/host/light_transmittance.glsl"
@@ -14,22 +18,48 @@
 
 in vec3 vPosition;
 in vec3 vNormal;
-in vec2 vUv0;
-in vec2 vUv1;
+#ifdef VERTEX_COLOR
+in vec4 vColor;
+#endif
+#ifdef BASE_COLOR_TEXTURE
+in vec2 vBaseColorUv;
+#endif
+#ifdef METALLIC_ROUGHNESS_TEXTURE
+in vec2 vMetallicRoughnessUv;
+#endif
+#ifdef EMISSIVE_TEXTURE
+in vec2 vEmissiveUv;
+#endif
 
-layout(location = 2) uniform vec4 uBaseColorFactor;
-layout(location = 3) uniform int uBaseColorTexCoord;  // −1: no texture
-layout(binding = 0) uniform sampler2D uBaseColor;
+layout(location = 4) uniform vec3 uEmissiveFactor;
 
 layout(location = 0) out vec4 outRadiance;
 
 void main() {
-    vec3 base = uBaseColorFactor.rgb;
-    if (uBaseColorTexCoord >= 0) base *= texture(uBaseColor, uBaseColorTexCoord == 0 ? vUv0 : vUv1).rgb;
+    vec4 base = uBaseColorFactor;
+#ifdef VERTEX_COLOR
+    base *= vColor;
+#endif
+#ifdef BASE_COLOR_TEXTURE
+    base *= texture(uBaseColor, vBaseColorUv);
+#endif
+#ifdef ALPHA_MASK
+    if (base.a < uMaterial.z) discard;
+#endif
+    vec2 metallicRoughness = uMaterial.xy;
+#ifdef METALLIC_ROUGHNESS_TEXTURE
+    metallicRoughness *= texture(uMetallicRoughness, vMetallicRoughnessUv).bg;
+#endif
+    vec3 emissive = uEmissiveFactor;
+#ifdef EMISSIVE_TEXTURE
+    emissive *= texture(uEmissive, vEmissiveUv).rgb;
+#endif
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;  // only double-sided materials reach here from behind
+    vec3 v = frameOrthographic() ? -frame.cameraForward.xyz : -normalize(vPosition);  // towards the eye
+    SurfaceBrdf brdf = surfaceBrdf(base.rgb, metallicRoughness.x, metallicRoughness.y);
 
-    vec3 radiance = base * frame.ambient.rgb;
+    vec3 radiance = base.rgb * frame.ambient.rgb + emissive;
     int i = 0;
     // do-while, not for (here and in the shaders it includes): llvmpipe runs a for loop's body once
     // more under an empty mask, which doubled the cost of a one-light frame.
@@ -43,7 +73,7 @@ void main() {
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
         transmittance = mediaTransmittance(i, lights[i].position.xyz, vPosition);
 #endif
-        radiance += base * INV_PI * s.irradiance * (cosine * visibility * transmittance);
+        radiance += brdfTimesCosine(brdf, n, v, s.toLight, cosine) * s.irradiance * (visibility * transmittance);
     } while (++i < frame.counts.x);
     outRadiance = vec4(radiance, 1.0);
 }

@@ -1,25 +1,48 @@
 #version 450 core
-// Opaque meshes (render/opaque_pass.cpp).
+// Opaque meshes (render/opaque_pass.cpp). Texture coordinates are chosen and transformed here,
+// per vertex, so fragments only sample.
 #include "common/frame.glsl"
+#include "common/material.glsl"
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec2 aUv0;
 layout(location = 3) in vec2 aUv1;
+layout(location = 4) in vec4 aColor;
 
 layout(location = 0) uniform mat4 uModel;         // object → origin-relative world
 layout(location = 1) uniform mat3 uNormalMatrix;  // inverse transpose of the model's 3×3
 
 out vec3 vPosition;
 out vec3 vNormal;
-out vec2 vUv0;
-out vec2 vUv1;
+#ifdef VERTEX_COLOR
+out vec4 vColor;
+#endif
+#ifdef BASE_COLOR_TEXTURE
+out vec2 vBaseColorUv;
+#endif
+#ifdef METALLIC_ROUGHNESS_TEXTURE
+out vec2 vMetallicRoughnessUv;
+#endif
+#ifdef EMISSIVE_TEXTURE
+out vec2 vEmissiveUv;
+#endif
 
 void main() {
     vec4 world = uModel * vec4(aPosition, 1.0);
     vPosition = world.xyz;
     vNormal = uNormalMatrix * aNormal;
-    vUv0 = aUv0;
-    vUv1 = aUv1;
+#ifdef VERTEX_COLOR
+    vColor = aColor;
+#endif
+#ifdef BASE_COLOR_TEXTURE
+    vBaseColorUv = materialUv(uBaseColorUv, uBaseColorTexCoord, aUv0, aUv1);
+#endif
+#ifdef METALLIC_ROUGHNESS_TEXTURE
+    vMetallicRoughnessUv = materialUv(uMetallicRoughnessUv, uMetallicRoughnessTexCoord, aUv0, aUv1);
+#endif
+#ifdef EMISSIVE_TEXTURE
+    vEmissiveUv = materialUv(uEmissiveUv, uEmissiveTexCoord, aUv0, aUv1);
+#endif
     gl_Position = frame.viewProjection * world;
 }

@@ -442,6 +442,37 @@ def write_malformed(glb_data):
         g.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorFactor": [1, 2, 0, 1]}}]
     malformed("base_color_out_of_range.gltf", base_color_range)
 
+    def negative_cutoff(g):
+        g.doc["materials"] = [{"name": "Leaves", "alphaMode": "MASK", "alphaCutoff": -0.5}]
+        g.doc["meshes"][0]["primitives"][0]["material"] = 0
+    malformed("alpha_cutoff_negative.gltf", negative_cutoff)
+
+    def emissive_texcoord_missing(g):
+        g.doc["images"] = [{"uri": "images/rgb.png"}]
+        g.doc["textures"] = [{"source": 0}]
+        g.doc["materials"] = [{"name": "Lamp", "emissiveTexture": {"index": 0, "texCoord": 1}}]
+        uv = g.accessor([0, 0, 1, 0, 0, 1], "VEC2")
+        g.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = uv
+        g.doc["meshes"][0]["primitives"][0]["material"] = 0
+    malformed("emissive_texcoord_missing.gltf", emissive_texcoord_missing)
+
+    def color_as_scalar(g):
+        g.doc["meshes"][0]["name"] = "Painted"
+        g.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = g.accessor([0.5, 0.5, 0.5], "SCALAR")
+    malformed("color_wrong_type.gltf", color_as_scalar)
+
+    def blend(g):
+        g.doc["materials"] = [{"name": "Glass", "alphaMode": "BLEND"}]
+        g.doc["meshes"][0]["primitives"][0]["material"] = 0
+    malformed("alpha_blend.gltf", blend)
+
+    def transform_bad(g):
+        g.doc["images"] = [{"uri": "images/rgb.png"}]
+        g.doc["textures"] = [{"source": 0}]
+        g.doc["materials"] = [{"name": "Tiled", "pbrMetallicRoughness": {"baseColorTexture": {
+            "index": 0, "extensions": {"KHR_texture_transform": {"scale": [2]}}}}}]
+    malformed("texture_transform_bad_scale.gltf", transform_bad)
+
     def glb1(g):
         g.doc["asset"]["version"] = "1.0"
     malformed("gltf_version_1.gltf", glb1)

@@ -28,13 +28,17 @@ assets::RgbImage renderDemo(const fs::path& scene, const fs::path& out) {
     return assets::readImage(out);
 }
 
-// A copy of demo.gltf (with its .bin beside it) changed by `edit`.
+// A copy of demo.gltf (with its .bin and textures beside it) changed by `edit`.
 fs::path editedDemo(const TempFolder& folder, const std::function<void(nlohmann::json&)>& edit) {
     std::ifstream in(kDemo);
     nlohmann::json gltf = nlohmann::json::parse(in);
     edit(gltf);
-    for (const auto& buffer : gltf.at("buffers"))
-        fs::copy_file(kDemo.parent_path() / buffer.at("uri").get<std::string>(), folder / buffer.at("uri").get<std::string>());
+    for (const char* array : {"buffers", "images"})
+        for (const auto& file : gltf.value(array, nlohmann::json::array())) {
+            const fs::path uri = file.at("uri").get<std::string>();
+            fs::create_directories((folder / uri).parent_path());
+            fs::copy_file(kDemo.parent_path() / uri, folder / uri);
+        }
     const fs::path file = folder / "demo_edited.gltf";
     std::ofstream(file) << gltf.dump();
     return file;

@@ -3,6 +3,8 @@
 // extension still draws its meshes, bad arguments are refused, and --stats reports the frame.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -123,6 +125,26 @@ TEST(SandboxRender, TinygltfCubeRendersItsTexture) {
         }
     std::sort(keys.begin(), keys.end());
     EXPECT_GT(std::unique(keys.begin(), keys.end()) - keys.begin(), 20);
+}
+
+TEST(SandboxRender, KhronosCamerasOrthographicCameraIsPickedByIndex) {
+    // Cameras.gltf: two unnamed cameras at one place before a unit square tilted 45° about x;
+    // cameras[1] is orthographic (xmag = ymag = 1): the square covers 1/2 of the width and
+    // cos 45°/2 of the height, 17.7 % of the frame whatever the distance.
+    TempFolder out;
+    const fs::path file = kData / "khronos/Cameras/Cameras.gltf";
+    const fs::path json = out / "stats.json";
+    const Rendered ortho = renderToFile(file, out / "ortho.exr", "160x160", {"--camera", "1", "--stats", json.string()});
+    const Rendered persp = renderToFile(file, out / "persp.exr", "160x160", {"--camera", "0"});
+    std::ifstream in(json);
+    EXPECT_EQ(nlohmann::json::parse(in).at("camera").get<std::string>(), "camera 1");
+    auto covered = [](const Rendered& r) { return countPixels(r.image, [](const glm::vec3& p) { return glm::length(p) > 0.0f; }); };
+    EXPECT_NEAR(covered(ortho), 0.5 * 0.5 * std::sqrt(0.5) * 160 * 160, 200.0);
+    EXPECT_NE(covered(ortho), covered(persp));
+    const ProcessResult unknown = sandbox({"render", file.string(), "--camera", "2", "--out", (out / "x.png").string()});
+    EXPECT_NE(unknown.exitCode, 0);
+    ASSERT_EQ(unknown.errLines().size(), 1u) << unknown.err;
+    EXPECT_NE(unknown.err.find("0 (unnamed), 1 (unnamed)"), std::string::npos) << unknown.err;
 }
 
 TEST(SandboxRender, TinygltfBox01GlbRenders) {

@@ -1,6 +1,7 @@
 // A ground pixel in a box's shadow is darker than its lit neighbour by exactly the ratio the
-// lighting model gives (docs/design.md §4: L = base/π·E·cosθ·V + base·L_amb):
-//   L_shadow / L_lit = base·L_amb / (base/π·E·cosθ + base·L_amb).
+// lighting model gives (docs/scene-format.md §4.1: L = f(l, v)·E·cosθ·V + base·L_amb, f the glTF
+// BRDF of a dielectric of roughness 1, evaluated per pixel for its view direction v):
+//   L_shadow / L_lit = base·L_amb / (f·E·cosθ + base·L_amb).
 // The scene is built in memory and rendered the way `sandbox render` renders a file.
 // Which pixels are shadowed is decided from geometry alone: the ray through the pixel centre
 // meets the ground, and the sun ray from there does or does not hit the box.
@@ -14,6 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtx/quaternion.hpp>
 
+#include "nimbus/assets/surface_brdf.h"
 #include "render_fixture.h"
 #include "scene_geometry.h"
 
@@ -39,6 +41,7 @@ std::shared_ptr<const assets::Scene> groundBoxAndSun() {
     assets::Material ground, red;
     ground.baseColorFactor = glm::vec4(kGroundBase, 1.0f);
     red.baseColorFactor = glm::vec4(0.8f, 0.1f, 0.1f, 1.0f);
+    ground.metallicFactor = red.metallicFactor = 0.0f;  // chalk, not glTF's default metal
     s->materials = {ground, red};
     const float g = static_cast<float>(kGroundHalf);
     s->meshes.push_back({"ground", {quad({-g, 0, -g}, {0, 0, 2 * g}, {2 * g, 0, 0}, 0)}});
@@ -125,11 +128,14 @@ protected:
     render::View view;
     assets::Aabb boxBounds;
 
-    // The lighting model, in double.
+    // The lighting model, in double, for the ground point seen through pixel (x, y).
     const double cosTheta = glm::dot(glm::dvec3(0, 1, 0), -kSunTravel);
     glm::vec3 shadowedRadiance() const { return kGroundBase * kAmbient; }
-    glm::vec3 litRadiance() const {
-        return glm::vec3(glm::dvec3(kGroundBase) * (kSunLux / glm::pi<double>() * cosTheta) + glm::dvec3(kGroundBase * kAmbient));
+    glm::vec3 litRadiance(int x, int y) const {
+        const glm::dvec3 up(0.0, 1.0, 0.0);
+        const glm::dvec3 f = assets::brdfTimesCosine(assets::surfaceBrdf(glm::dvec3(kGroundBase), 0.0, 1.0), up, -pixelRay(view, x, y),
+                                                     -kSunTravel, cosTheta);
+        return glm::vec3(f * double(kSunLux) + glm::dvec3(kGroundBase * kAmbient));
     }
 };
 
@@ -156,10 +162,10 @@ TEST_F(ShadowRatio, ShadowedPixelIsDarkerThanItsLitNeighbourByTheModelsRatio) {
     EXPECT_LE(best, 8 * 8) << "neighbours";
 
     const glm::vec3 lShadow = image.at(s.x, s.y), lLit = image.at(l.x, l.y);
-    const glm::vec3 expectedRatio = shadowedRadiance() / litRadiance();
+    const glm::vec3 expectedRatio = shadowedRadiance() / litRadiance(l.x, l.y);
     EXPECT_TRUE(withinRelative(lShadow / lLit, expectedRatio, 0.01)) << "L_shadow / L_lit";
     EXPECT_TRUE(withinRelative(lShadow, shadowedRadiance(), 0.01)) << "L_shadow";
-    EXPECT_TRUE(withinRelative(lLit, litRadiance(), 0.01)) << "L_lit";
+    EXPECT_TRUE(withinRelative(lLit, litRadiance(l.x, l.y), 0.01)) << "L_lit";
 }
 
 TEST_F(ShadowRatio, EveryGroundPixelIsShadowedExactlyWhereGeometrySays) {
@@ -171,7 +177,7 @@ TEST_F(ShadowRatio, EveryGroundPixelIsShadowedExactlyWhereGeometrySays) {
             if (c != Light::Shadowed && c != Light::Lit) continue;
             const bool inShadow = c == Light::Shadowed;
             (inShadow ? shadowedCount : litCount)++;
-            const glm::vec3 expected = inShadow ? shadowedRadiance() : litRadiance();
+            const glm::vec3 expected = inShadow ? shadowedRadiance() : litRadiance(x, y);
             const auto ok = withinRelative(image.at(x, y), expected, 0.01);
             if (!ok) {
                 (inShadow ? wrongShadowed : wrongLit)++;

@@ -4,6 +4,7 @@
 Each scene is plain glTF 2.0 plus the NIMBUS_participating_media extension; the files are the
 source of truth and are committed, this script only records how they were authored.
 """
+import math
 import os
 import sys
 
@@ -13,19 +14,78 @@ from gltf_builder import Builder, ellipsoid_blob  # noqa: E402
 OUT = os.path.join(os.path.dirname(__file__), "..", "..", "content", "scenes")
 
 
+# -- procedural textures (sRGB bytes; tools/scenegen writes them as PNG beside the scene) ---------
+
+
+def _hash(*values):
+    """A repeatable pseudo-random number in [0, 1) from integers (no global random state)."""
+    h = 2166136261
+    for v in values:
+        h = ((h ^ (v & 0xFFFFFFFF)) * 16777619) & 0xFFFFFFFF
+    return h / 4294967296.0
+
+
+def paving(x, y):
+    """64×64: 4×4 stone slabs with grout, each slab its own shade."""
+    tx, ty = x // 16, y // 16
+    if x % 16 in (0, 15) or y % 16 in (0, 15):
+        return (118, 112, 104, 255)
+    shade = 0.88 + 0.24 * _hash(tx, ty) + 0.04 * (_hash(x, y, 7) - 0.5)
+    return (186 * shade, 178 * shade, 166 * shade, 255)
+
+
+def bricks(x, y):
+    """64×64: 8 courses of running-bond bricks in mortar."""
+    course = y // 8
+    shift = 8 if course % 2 else 0
+    bx = (x + shift) // 16
+    if y % 8 == 7 or (x + shift) % 16 == 15:
+        return (196, 188, 172, 255)
+    shade = 0.85 + 0.3 * _hash(bx, course)
+    return (168 * shade, 66 * shade, 48 * shade, 255)
+
+
+def facade(x, y):
+    """32×64 per storey: light concrete with one dark window."""
+    if 8 <= x < 24 and 16 <= y < 44:
+        return (40, 48, 58, 255)
+    return (205 + 10 * _hash(x, y), 202 + 10 * _hash(x, y, 1), 196, 255)
+
+
+def facade_light(x, y):
+    """The facade's emissive texture: its window lit, warm."""
+    if 9 <= x < 23 and 17 <= y < 43:
+        return (255, 214, 160, 255)
+    return (0, 0, 0, 255)
+
+
+def brushed(x, y):
+    """16×16 metallic-roughness texture: roughness (green) in bands, metal (blue) everywhere."""
+    return (0, 120 + 70 * _hash(y), 255, 255)
+
+
 def demo():
-    """Issue 2's default scene: ground, a few boxes, a sun and a camera."""
+    """Issue 2's default scene: ground, a few boxes, a sun and a camera. Issue 37 gave the
+    buildings and ground real materials: paving and bricks (textures), a steel slab (metallic,
+    its roughness from a texture) and a tower whose windows glow (emissive texture)."""
     b = Builder()
     b.environment(background=[0.45, 0.55, 0.75], ambient=[0.12, 0.14, 0.18])
-    ground = b.material("ground", (0.55, 0.52, 0.48))
-    red = b.material("red", (0.75, 0.12, 0.1))
-    white = b.material("white", (0.8, 0.8, 0.8))
-    blue = b.material("blue", (0.15, 0.25, 0.7))
-    b.node("ground", mesh=b.plane_mesh("ground", 20, 20, ground))
-    b.node("box_red", translation=(0, 1, 0), mesh=b.box_mesh("box_2m", (2, 2, 2), red))
-    b.node("tower_white", translation=(-3.5, 2, -2), mesh=b.box_mesh("tower", (1.2, 4, 1.2), white))
+    paving_tex = b.texture("textures/paving.png", 64, 64, paving)
+    bricks_tex = b.texture("textures/bricks.png", 64, 64, bricks)
+    facade_tex = b.texture("textures/facade.png", 32, 64, facade)
+    facade_light_tex = b.texture("textures/facade_light.png", 32, 64, facade_light)
+    brushed_tex = b.texture("textures/brushed.png", 16, 16, brushed)
+    ground = b.material("ground", (0.85, 0.85, 0.85), roughness=0.9, base_texture=b.texture_info(paving_tex))
+    red = b.material("red", (1.0, 1.0, 1.0), roughness=0.8, base_texture=b.texture_info(bricks_tex))
+    white = b.material("white", (1.0, 1.0, 1.0), roughness=0.7, base_texture=b.texture_info(facade_tex),
+                       emissive=(1.0, 0.8, 0.5), emissive_texture=b.texture_info(facade_light_tex))
+    blue = b.material("blue", (0.56, 0.6, 0.68), metallic=1.0, roughness=1.0,
+                      metallic_roughness_texture=b.texture_info(brushed_tex))
+    b.node("ground", mesh=b.plane_mesh("ground", 20, 20, ground, uv_scale=4.0))
+    b.node("box_red", translation=(0, 1, 0), mesh=b.box_mesh("box_2m", (2, 2, 2), red, uv_scale=1.0))
+    b.node("tower_white", translation=(-3.5, 2, -2), mesh=b.box_mesh("tower", (1.2, 4, 1.2), white, uv_scale=1.2))
     b.node("slab_blue", translation=(3, 0.4, 1.5), rotation=(0, 0.3826834, 0, 0.9238795),
-           mesh=b.box_mesh("slab", (2.5, 0.8, 1.2), blue))
+           mesh=b.box_mesh("slab", (2.5, 0.8, 1.2), blue, uv_scale=0.8))
     b.sun("sun", direction=(0.55, -0.75, -0.35), intensity=3.0)
     b.camera("main", eye=(9, 6, 11), target=(0, 1, 0), yfov=0.65)
     return b
@@ -200,11 +260,80 @@ def fog_smoke():
     return b
 
 
+def slabs(x, y):
+    """8×8: large paving slabs, each its own shade (read magnified: no minification to filter)."""
+    shade = 0.8 + 0.3 * _hash(x, y, 3)
+    return (176 * shade, 170 * shade, 160 * shade, 255)
+
+
+def coarse_bricks(x, y):
+    """16×16: 4 courses of two bricks, for a wall seen magnified."""
+    course = y // 4
+    shift = 4 if course % 2 else 0
+    if y % 4 == 3 or (x + shift) % 8 == 7:
+        return (196, 188, 172, 255)
+    shade = 0.85 + 0.3 * _hash((x + shift) // 8, course)
+    return (168 * shade, 66 * shade, 48 * shade, 255)
+
+
+def lattice(x, y):
+    """16×16 fence: bars two texels wide around square holes (alpha 0)."""
+    bar = x % 8 < 2 or y % 8 < 2
+    return (150, 150, 146, 255 if bar else 0)
+
+
+def courtyard():
+    """Issue 37: every mesh material feature beside smoke. Paving read through
+    KHR_texture_transform, a brick wall read through TEXCOORD_1, a lattice fence cut out by its alpha
+    (MASK, double-sided) that shadows the ground and the smoke, three steel spheres from rough to
+    polished, crates painted by COLOR_0, and a glowing sign (emissive). The samplers ask for no
+    mipmaps, so the judge (one ray per pixel, one bilinear tap) and the rasteriser filter alike."""
+    b = Builder()
+    b.environment(background=[0.5, 0.6, 0.78], ambient=[0.14, 0.15, 0.18])
+    slabs_tex = b.texture("textures/slabs.png", 8, 8, slabs, mipmaps=False)
+    bricks_tex = b.texture("textures/coarse_bricks.png", 16, 16, coarse_bricks, mipmaps=False)
+    lattice_tex = b.texture("textures/lattice.png", 16, 16, lattice, mipmaps=False)
+    ground = b.material("paving", (1.0, 1.0, 1.0), roughness=0.85,
+                        base_texture=b.texture_info(slabs_tex, scale=(0.5, 0.5), rotation=0.3, offset=(0.1, 0.2)))
+    brick = b.material("brick", (1.0, 1.0, 1.0), roughness=0.8, base_texture=b.texture_info(bricks_tex, tex_coord=1))
+    fence = b.material("fence", (0.9, 0.9, 0.9), metallic=1.0, roughness=0.5, alpha_cutoff=0.5, double_sided=True,
+                       base_texture=b.texture_info(lattice_tex))
+    painted = b.material("painted", (1.0, 1.0, 1.0), roughness=0.6)
+    sign = b.material("sign", (0.1, 0.1, 0.1), roughness=0.4, emissive=(1.0, 0.45, 0.15))
+    b.node("ground", mesh=b.plane_mesh("ground", 7, 7, ground, uv_scale=1.0))
+    # The wall: the bricks read TEXCOORD_1 (2 m per repeat); TEXCOORD_0 (0.5 m per repeat, bricks
+    # four times smaller) is there to be ignored.
+    wall_mesh = b.box_mesh("wall", (12.0, 3.0, 0.4), brick, uv_scale=2.0)
+    primitive = b.doc["meshes"][wall_mesh]["primitives"][0]
+    primitive["attributes"]["TEXCOORD_1"] = primitive["attributes"].pop("TEXCOORD_0")
+    small = b.doc["meshes"][b.box_mesh("unused", (12.0, 3.0, 0.4), brick, uv_scale=0.5)]["primitives"][0]["attributes"]
+    primitive["attributes"]["TEXCOORD_0"] = small["TEXCOORD_0"]
+    b.doc["meshes"].pop()  # only its accessor is kept
+    b.node("wall", translation=(0, 1.5, -4.5), mesh=wall_mesh)
+    b.node("sign", translation=(-2.5, 2.2, -4.28), mesh=b.box_mesh("sign", (1.6, 0.5, 0.04), sign))
+    b.node("fence", translation=(2.2, 1.0, -1.0), rotation=(0, 0.2588190, 0, 0.9659258),
+           mesh=b.box_mesh("fence", (3.0, 2.0, 0.02), fence, uv_scale=0.75))
+    for i, roughness in enumerate((0.9, 0.55, 0.25)):
+        steel = b.material("steel_%d" % i, (0.75, 0.74, 0.72), metallic=1.0, roughness=roughness)
+        b.node("sphere_%d" % i, translation=(-3.4 + 1.3 * i, 0.55, 1.2), mesh=b.sphere_mesh("sphere_%d" % i, 0.55, steel))
+    faces = [(0.8, 0.2, 0.15, 1), (0.2, 0.6, 0.25, 1), (0.9, 0.8, 0.3, 1), (0.3, 0.3, 0.3, 1), (0.2, 0.35, 0.8, 1), (0.7, 0.4, 0.8, 1)]
+    crate = b.box_mesh("crate", (0.9, 0.9, 0.9), painted, colors=faces)
+    for i, (x, z, turn) in enumerate(((-1.2, -2.6, 0.2), (3.6, 1.4, -0.35))):
+        b.node("crate_%d" % i, translation=(x, 0.45, z), rotation=(0, math.sin(turn / 2), 0, math.cos(turn / 2)), mesh=crate)
+    b.node("chimney", translation=(0.8, 0.05, -2.6),
+           ext={"medium": {"extinction": 4.0, "albedo": [0.75, 0.75, 0.75], "g": 0.3},
+                "emitter": {"preset": "smoke", "seed": 37, "rate": 14, "max_particles": 300,
+                            "shape": {"type": "disc", "radius": 0.3}, "velocity": [0.0, 0.8, 0.0], "wind": [0.35, 0.0, 0.15]}})
+    b.sun("sun", direction=(-0.45, -0.7, -0.55), intensity=3.0)
+    b.camera("main", eye=(5.5, 5.0, 8.0), target=(0.2, 0.9, -1.0), yfov=0.75)
+    return b
+
+
 SCENES = {"demo": demo, "cloud": cloud, "cumulus": cumulus, "cumulus_aircraft": cumulus_aircraft, "smoke": smoke, "campfire": campfire,
-          "jet": jet, "explosion": explosion, "fog_smoke": fog_smoke}
+          "jet": jet, "explosion": explosion, "fog_smoke": fog_smoke, "courtyard": courtyard}
 
 # Times at which the scenes are rendered for tests and the demo (emitters need time to fill).
-TIMES = {"smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8, "fog_smoke": 8.0}
+TIMES = {"smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8, "fog_smoke": 8.0, "courtyard": 6.0}
 
 if __name__ == "__main__":
     wanted = sys.argv[1:] or list(SCENES)

@@ -173,13 +173,32 @@ void checkSamplersAndTextures(const GltfCheckInput& in) {
     });
 }
 
-// A textureInfo object: {"index": texture, "texCoord": n}; returns the texCoord (or -1 when absent).
-int checkTextureInfo(const GltfCheckInput& in, const JsonPlace& place, const Json& owner, const char* key) {
+// KHR_texture_transform on a textureInfo: offset, rotation, scale and an optional texCoord override.
+std::optional<std::int64_t> checkTextureTransform(const JsonPlace& place, const Json& info) {
+    const Json* ext = optionalObject(place, info, "extensions");
+    if (!ext) return std::nullopt;
+    const Json* transform = optionalObject(place.nested("extensions"), *ext, "KHR_texture_transform");
+    if (!transform) return std::nullopt;
+    const JsonPlace t = place.nested("extensions").nested("KHR_texture_transform");
+    optionalNumberArray(t, *transform, "offset", 2, -kHuge, kHuge);
+    optionalNumber(t, *transform, "rotation", -kHuge, kHuge);
+    optionalNumberArray(t, *transform, "scale", 2, -kHuge, kHuge);
+    return optionalInteger(t, *transform, "texCoord", 0, 1 << 20);
+}
+
+// A textureInfo object: {"index": texture, "texCoord": n, "extensions": {"KHR_texture_transform": ...}}.
+// Returns the TEXCOORD set it reads (the transform's texCoord wins), or -1 when absent. `drawn`
+// textures must read TEXCOORD_0 or TEXCOORD_1; the others are checked, not drawn.
+int checkTextureInfo(const GltfCheckInput& in, const JsonPlace& place, const Json& owner, const char* key, bool drawn) {
     const Json* info = optionalObject(place, owner, key);
     if (!info) return -1;
     const JsonPlace p = place.nested(key);
     requiredIndex(p, *info, "index", topLevelArray(*in.root, "textures").size(), "textures");
-    return static_cast<int>(optionalInteger(p, *info, "texCoord", 0, 1 << 20).value_or(0));
+    int set = static_cast<int>(optionalInteger(p, *info, "texCoord", 0, 1 << 20).value_or(0));
+    if (const auto overridden = checkTextureTransform(p, *info)) set = static_cast<int>(*overridden);
+    if (drawn && set > 1)
+        p.fail("texCoord", "TEXCOORD_" + std::to_string(set) + " is not supported (Nimbus reads TEXCOORD_0 and TEXCOORD_1)");
+    return set;
 }
 
 void checkMaterials(const GltfCheckInput& in) {
@@ -189,17 +208,19 @@ void checkMaterials(const GltfCheckInput& in) {
             optionalNumberArray(p, *pbr, "baseColorFactor", 4, 0.0, 1.0);
             optionalNumber(p, *pbr, "metallicFactor", 0.0, 1.0);
             optionalNumber(p, *pbr, "roughnessFactor", 0.0, 1.0);
-            const int texCoord = checkTextureInfo(in, p, *pbr, "baseColorTexture");
-            if (texCoord > 1)
-                p.fail("baseColorTexture.texCoord", "TEXCOORD_" + std::to_string(texCoord) +
-                                                       " is not supported (Nimbus reads TEXCOORD_0 and TEXCOORD_1)");
-            checkTextureInfo(in, p, *pbr, "metallicRoughnessTexture");
+            checkTextureInfo(in, p, *pbr, "baseColorTexture", true);
+            checkTextureInfo(in, p, *pbr, "metallicRoughnessTexture", true);
         }
-        checkTextureInfo(in, place, m, "normalTexture");
-        checkTextureInfo(in, place, m, "occlusionTexture");
-        checkTextureInfo(in, place, m, "emissiveTexture");
+        checkTextureInfo(in, place, m, "normalTexture", false);
+        checkTextureInfo(in, place, m, "occlusionTexture", false);
+        checkTextureInfo(in, place, m, "emissiveTexture", true);
         optionalNumberArray(place, m, "emissiveFactor", 3, 0.0, kHuge);
-        optionalEnum(place, m, "alphaMode", {"OPAQUE", "MASK", "BLEND"});
+        const auto mode = optionalEnum(place, m, "alphaMode", {"OPAQUE", "MASK", "BLEND"});
+        // Transparent meshes would have to be sorted and composed with the media; until they are,
+        // a BLEND material is refused rather than drawn opaque (docs/scene-format.md §4.1).
+        if (mode == "BLEND")
+            place.fail("alphaMode", "BLEND is not supported (transparent meshes are not composed with the media yet); "
+                                    "use OPAQUE or MASK");
         optionalNumber(place, m, "alphaCutoff", 0.0, kHuge);
         optionalBool(place, m, "doubleSided");
     });
@@ -255,6 +276,10 @@ void checkPrimitive(const GltfCheckInput& in, const JsonPlace& place, const Json
             checkAttributeLayout(in, ap, name, accessor, {{"VEC3", 5126, false}});
         } else if (name == "TEXCOORD_0" || name == "TEXCOORD_1") {
             checkAttributeLayout(in, ap, name, accessor, {{"VEC2", 5126, false}, {"VEC2", 5121, true}, {"VEC2", 5123, true}});
+        } else if (name == "COLOR_0") {
+            checkAttributeLayout(in, ap, name, accessor,
+                                 {{"VEC3", 5126, false}, {"VEC4", 5126, false}, {"VEC3", 5121, true}, {"VEC4", 5121, true},
+                                  {"VEC3", 5123, true}, {"VEC4", 5123, true}});
         }
     }
     const auto indices = optionalIndex(place, prim, "indices", accessors, "accessors");
@@ -280,15 +305,21 @@ void checkPrimitive(const GltfCheckInput& in, const JsonPlace& place, const Json
                        "count " + std::to_string(n) + " is not a multiple of 3 (mode TRIANGLES)");
     }
     // A material sampling TEXCOORD_n needs the primitive to have it.
-    if (material) {
+    if (material && attributes.contains("POSITION")) {
         const Json& m = materials[static_cast<std::size_t>(*material)];
-        if (m.contains("pbrMetallicRoughness") && m["pbrMetallicRoughness"].contains("baseColorTexture")) {
-            const int set = m["pbrMetallicRoughness"]["baseColorTexture"].value("texCoord", 0);
+        const std::string name = describeObject("material", "materials", static_cast<std::size_t>(*material), m);
+        const JsonPlace mp{place.file, name, ""};
+        auto need = [&](const Json& owner, const char* key, const std::string& field) {
+            const int set = checkTextureInfo(in, mp, owner, key, false);
             const std::string needed = "TEXCOORD_" + std::to_string(set);
-            if (attributes.contains("POSITION") && !attributes.contains(needed))
-                ap.fail(needed, "missing, but " + describeObject("material", "materials", static_cast<std::size_t>(*material), m) +
-                                    " samples its baseColorTexture with it");
+            if (set >= 0 && !attributes.contains(needed))
+                ap.fail(needed, "missing, but " + name + " samples its " + field + " with it");
+        };
+        if (m.contains("pbrMetallicRoughness")) {
+            need(m["pbrMetallicRoughness"], "baseColorTexture", "baseColorTexture");
+            need(m["pbrMetallicRoughness"], "metallicRoughnessTexture", "metallicRoughnessTexture");
         }
+        need(m, "emissiveTexture", "emissiveTexture");
     }
 }
 

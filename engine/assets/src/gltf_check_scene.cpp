@@ -319,7 +319,7 @@ const Json& punctualLights(const Json& root) {
 }
 
 bool isSupportedRequiredExtension(const std::string& name) {
-    return name == "KHR_lights_punctual" || name == kMediaExtension;
+    return name == "KHR_lights_punctual" || name == "KHR_texture_transform" || name == kMediaExtension;
 }
 
 void checkGltfSceneGraph(const GltfCheckInput& in) {

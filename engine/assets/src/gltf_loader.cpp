@@ -121,22 +121,63 @@ std::vector<Texture> buildTextures(const tinygltf::Model& model, const Json& roo
     return textures;
 }
 
-std::vector<Material> buildMaterials(const tinygltf::Model& model, const Json& root, const std::vector<Texture>& textures,
-                                     const std::string& name) {
-    std::vector<Material> materials(model.materials.size());
-    for (std::size_t i = 0; i < model.materials.size(); ++i) {
-        const tinygltf::Material& src = model.materials[i];
+// A textureInfo as checked by checkMaterials: index, texCoord and KHR_texture_transform folded into
+// one affine map (the extension's translation · rotation · scale).
+TextureRef readTextureRef(const Json& owner, const char* key) {
+    TextureRef ref;
+    if (!owner.contains(key)) return ref;
+    const Json& info = owner[key];
+    ref.texture = info["index"].get<int>();
+    ref.texCoord = info.value("texCoord", 0);
+    if (!info.contains("extensions") || !info["extensions"].contains("KHR_texture_transform")) return ref;
+    const Json& t = info["extensions"]["KHR_texture_transform"];
+    const double ox = t.contains("offset") ? t["offset"][0].get<double>() : 0.0, oy = t.contains("offset") ? t["offset"][1].get<double>() : 0.0;
+    const double sx = t.contains("scale") ? t["scale"][0].get<double>() : 1.0, sy = t.contains("scale") ? t["scale"][1].get<double>() : 1.0;
+    const double r = t.value("rotation", 0.0);
+    ref.row0 = glm::vec3(glm::dvec3(std::cos(r) * sx, -std::sin(r) * sy, ox));
+    ref.row1 = glm::vec3(glm::dvec3(std::sin(r) * sx, std::cos(r) * sy, oy));
+    ref.texCoord = t.value("texCoord", ref.texCoord);
+    return ref;
+}
+
+std::vector<Material> buildMaterials(const Json& root, const std::vector<Texture>& textures, const std::string& name) {
+    const Json& array = topLevelArray(root, "materials");
+    std::vector<Material> materials(array.size());
+    std::vector<std::string> undrawn;  // materials with normal or occlusion textures
+    for (std::size_t i = 0; i < array.size(); ++i) {
+        const Json& src = array[i];
         Material& m = materials[i];
-        m.name = src.name;
-        const std::vector<double>& f = src.pbrMetallicRoughness.baseColorFactor;
-        if (f.size() == 4) m.baseColorFactor = glm::vec4(glm::dvec4(f[0], f[1], f[2], f[3]));
-        m.baseColorTexture = src.pbrMetallicRoughness.baseColorTexture.index;
-        m.baseColorTexCoord = src.pbrMetallicRoughness.baseColorTexture.texCoord;
-        m.doubleSided = src.doubleSided;
-        if (m.baseColorTexture >= 0 && textures[static_cast<std::size_t>(m.baseColorTexture)].image < 0)
-            throwInputError(name, describeObject("material", "materials", i, jsonElement(root, "materials", i)),
-                            "pbrMetallicRoughness.baseColorTexture",
-                            "textures[" + std::to_string(m.baseColorTexture) + "] has no image Nimbus can decode");
+        m.name = src.value("name", "");
+        const Json pbr = src.value("pbrMetallicRoughness", Json::object());
+        if (pbr.contains("baseColorFactor")) {
+            const Json& f = pbr["baseColorFactor"];
+            m.baseColorFactor = glm::vec4(glm::dvec4(f[0].get<double>(), f[1].get<double>(), f[2].get<double>(), f[3].get<double>()));
+        }
+        m.baseColorTexture = readTextureRef(pbr, "baseColorTexture");
+        m.metallicFactor = static_cast<float>(pbr.value("metallicFactor", 1.0));
+        m.roughnessFactor = static_cast<float>(pbr.value("roughnessFactor", 1.0));
+        m.metallicRoughnessTexture = readTextureRef(pbr, "metallicRoughnessTexture");
+        if (src.contains("emissiveFactor")) {
+            const Json& e = src["emissiveFactor"];
+            m.emissiveFactor = glm::vec3(glm::dvec3(e[0].get<double>(), e[1].get<double>(), e[2].get<double>()));
+        }
+        m.emissiveTexture = readTextureRef(src, "emissiveTexture");
+        const std::string mode = src.value("alphaMode", std::string("OPAQUE"));
+        m.alphaMode = mode == "MASK" ? AlphaMode::Mask : mode == "BLEND" ? AlphaMode::Blend : AlphaMode::Opaque;
+        m.alphaCutoff = static_cast<float>(src.value("alphaCutoff", 0.5));
+        m.doubleSided = src.value("doubleSided", false);
+        const std::string object = describeObject("material", "materials", i, src);
+        for (const auto& [ref, field] : {std::pair{&m.baseColorTexture, "pbrMetallicRoughness.baseColorTexture"},
+                                         std::pair{&m.metallicRoughnessTexture, "pbrMetallicRoughness.metallicRoughnessTexture"},
+                                         std::pair{&m.emissiveTexture, "emissiveTexture"}})
+            if (ref->present() && textures[static_cast<std::size_t>(ref->texture)].image < 0)
+                throwInputError(name, object, field, "textures[" + std::to_string(ref->texture) + "] has no image Nimbus can decode");
+        if (src.contains("normalTexture") || src.contains("occlusionTexture")) undrawn.push_back(object);
+    }
+    if (!undrawn.empty()) {
+        std::string list;
+        for (const std::string& o : undrawn) list += (list.empty() ? "" : ", ") + o;
+        log::warn(name + ": normal and occlusion textures are not drawn (docs/scene-format.md §4.1): " + list);
     }
     return materials;
 }
@@ -249,6 +290,13 @@ glm::vec3 readColor(const Json& object, const char* key) {
     return glm::vec3(glm::dvec3(c[0].get<double>(), c[1].get<double>(), c[2].get<double>()));
 }
 
+bool hasLightInScene(const Scene& scene) {
+    const std::vector<bool> in = nodesInScene(scene);
+    for (std::size_t i = 0; i < scene.nodes.size(); ++i)
+        if (in[i] && scene.nodes[i].light >= 0) return true;
+    return false;
+}
+
 // Values that are finite one by one can still overflow when composed (a scale of 1e200 twice).
 void checkWorldTransformsFinite(const Scene& scene, const Json& root) {
     const std::vector<glm::dmat4> world = computeWorldTransforms(scene, 0.0);
@@ -282,7 +330,7 @@ Scene loadSceneFromSource(GltfSource src, const std::filesystem::path& file) {
     scene.path = file;
     scene.images = takeImages(model, root, name);
     scene.textures = buildTextures(model, root);
-    scene.materials = buildMaterials(model, root, scene.textures, name);
+    scene.materials = buildMaterials(root, scene.textures, name);
     scene.meshes = buildMeshes(model, root, name);
     scene.cameras = buildCameras(model);
     scene.lights = buildLights(root);
@@ -298,6 +346,12 @@ Scene loadSceneFromSource(GltfSource src, const std::filesystem::path& file) {
             scene.environment.fog = readFog(media);
             if (media.value("scattering", std::string("multiple")) == "single") scene.environment.scattering = Scattering::Single;
         }
+    }
+    // A plain glTF file without lights: the default sun alone would leave every face turned from it
+    // black, so it also gets the documented default ambient (docs/scene-format.md §4).
+    if (!scene.extensions.contains(kMediaExtension) && !hasLightInScene(scene)) {
+        scene.environment.ambient = glm::vec3(kDefaultAmbient);
+        scene.environment.defaultAmbient = true;
     }
     scene.document = document;
     checkWorldTransformsFinite(scene, root);

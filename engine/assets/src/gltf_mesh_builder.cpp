@@ -66,6 +66,7 @@ void unweldWithFlatNormals(Primitive& p) {
     const std::size_t corners = p.indices.size();
     std::vector<glm::vec3> positions(corners), normals(corners);
     std::vector<glm::vec2> uv0(p.texcoords0.empty() ? 0 : corners), uv1(p.texcoords1.empty() ? 0 : corners);
+    std::vector<glm::vec4> colors(p.colors0.empty() ? 0 : corners);
     for (std::size_t t = 0; t + 2 < corners; t += 3) {
         const glm::vec3 n = triangleNormal(p.positions[p.indices[t]], p.positions[p.indices[t + 1]], p.positions[p.indices[t + 2]]);
         for (std::size_t k = t; k < t + 3; ++k) {
@@ -73,12 +74,14 @@ void unweldWithFlatNormals(Primitive& p) {
             normals[k] = n;
             if (!uv0.empty()) uv0[k] = p.texcoords0[p.indices[k]];
             if (!uv1.empty()) uv1[k] = p.texcoords1[p.indices[k]];
+            if (!colors.empty()) colors[k] = p.colors0[p.indices[k]];
         }
     }
     p.positions = std::move(positions);
     p.normals = std::move(normals);
     p.texcoords0 = std::move(uv0);
     p.texcoords1 = std::move(uv1);
+    p.colors0 = std::move(colors);
     std::iota(p.indices.begin(), p.indices.end(), 0u);
 }
 
@@ -111,6 +114,14 @@ bool buildPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& pri
         out.texcoords0 = readVectors<glm::vec2, 2>(model, a, file, place, "attributes.TEXCOORD_0");
     if (const int a = attributeAccessor(prim, "TEXCOORD_1"); a >= 0)
         out.texcoords1 = readVectors<glm::vec2, 2>(model, a, file, place, "attributes.TEXCOORD_1");
+    if (const int a = attributeAccessor(prim, "COLOR_0"); a >= 0) {
+        // VEC3 or VEC4 (checked): RGB gets alpha 1. Values are linear, as glTF stores them.
+        if (model.accessors[static_cast<std::size_t>(a)].type == TINYGLTF_TYPE_VEC3) {
+            for (const glm::vec3& c : readVectors<glm::vec3, 3>(model, a, file, place, "attributes.COLOR_0")) out.colors0.emplace_back(c, 1.0f);
+        } else {
+            out.colors0 = readVectors<glm::vec4, 4>(model, a, file, place, "attributes.COLOR_0");
+        }
+    }
 
     std::vector<std::uint32_t> indices;
     if (prim.indices >= 0) {

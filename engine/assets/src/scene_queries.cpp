@@ -113,27 +113,47 @@ Aabb meshBounds(const Scene& scene, const std::vector<glm::dmat4>& world) {
     return bounds;
 }
 
+namespace {
+
+// `text` as a camera index (decimal digits only), or −1.
+int cameraIndex(std::string_view text) {
+    if (text.empty() || text.size() > 9) return -1;
+    int value = 0;
+    for (const char c : text) {
+        if (c < '0' || c > '9') return -1;
+        value = value * 10 + (c - '0');
+    }
+    return value;
+}
+
+}  // namespace
+
 ResolvedCamera resolveCamera(const Scene& scene, const std::vector<glm::dmat4>& world, std::string_view name,
                              const Aabb& frame, double aspect) {
     const std::vector<bool> in = nodesInScene(scene);
+    const int index = cameraIndex(name);
+    std::optional<ResolvedCamera> byIndex;
     std::string available;
     for (std::size_t i = 0; i < scene.nodes.size() && i < world.size(); ++i) {
         const Node& node = scene.nodes[i];
         if (!in[i] || node.camera < 0 || static_cast<std::size_t>(node.camera) >= scene.cameras.size()) continue;
         const Camera& camera = scene.cameras[static_cast<std::size_t>(node.camera)];
+        ResolvedCamera out;
+        out.name = !camera.name.empty() ? camera.name : !node.name.empty() ? node.name : "camera " + std::to_string(node.camera);
+        out.params = camera;
+        out.world = world[i];
+        // A name wins over an index ("--camera 1" picks a camera named "1" before cameras[1]).
+        if (name.empty() || camera.name == name || node.name == name) return out;
+        if (node.camera == index && !byIndex) byIndex = out;
         const std::string label = !camera.name.empty() ? camera.name : node.name;
-        if (name.empty() || camera.name == name || node.name == name) {
-            ResolvedCamera out;
-            out.name = label;
-            out.params = camera;
-            out.world = world[i];
-            return out;
-        }
-        available += (available.empty() ? "\"" : ", \"") + label + "\"";
+        available += (available.empty() ? "" : ", ") + std::to_string(node.camera) +
+                     (label.empty() ? " (unnamed)" : " \"" + label + "\"");
     }
+    if (byIndex) return *byIndex;
     if (!name.empty())
         throwInputError(scene.displayName(), "camera \"" + std::string(name) + "\"", "",
-                        available.empty() ? "not found: the scene has no camera" : "not found; the scene's cameras are " + available);
+                        available.empty() ? "not found: the scene has no camera"
+                                          : "not found; the scene's cameras (index and name) are " + available);
 
     // No camera: look at the centre of `frame` from (+1, +0.6, +1.4), far enough back that the
     // bounding sphere fits both the vertical and the horizontal field of view.

@@ -17,11 +17,28 @@ namespace nimbus::raycast {
 struct MeshRaycaster::Geometry {
     int node = -1, mesh = -1, primitive = -1, material = -1;
     bool doubleSided = false;
+    const assets::MaterialSampler* cutout = nullptr;  // MASK materials: alpha below alphaCutoff is no surface
+    double alphaCutoff = 0.5;
     bool mirrored = false;         // negative determinant: glTF says front faces are then clockwise
     std::vector<float> vertices;   // xyz relative to the raycaster origin, + 1 float of padding (Embree reads 16 bytes)
     std::vector<std::uint32_t> indices;
     std::vector<glm::vec3> normals;  // world space, unit
     std::vector<glm::vec2> texcoords0, texcoords1;
+    std::vector<glm::vec4> colors0;
+
+    // Texture coordinates and colour at barycentrics (u, v) of a triangle (Embree: w·v0 + u·v1 + v·v2).
+    assets::SurfaceAttributes attributesAt(unsigned triangle, double u, double v) const {
+        const std::uint32_t i0 = indices[3 * triangle], i1 = indices[3 * triangle + 1], i2 = indices[3 * triangle + 2];
+        const double w = 1.0 - u - v;
+        assets::SurfaceAttributes a;
+        if (!texcoords0.empty()) a.uv0 = w * glm::dvec2(texcoords0[i0]) + u * glm::dvec2(texcoords0[i1]) + v * glm::dvec2(texcoords0[i2]);
+        if (!texcoords1.empty()) a.uv1 = w * glm::dvec2(texcoords1[i0]) + u * glm::dvec2(texcoords1[i1]) + v * glm::dvec2(texcoords1[i2]);
+        if (!colors0.empty()) a.color = w * glm::dvec4(colors0[i0]) + u * glm::dvec4(colors0[i1]) + v * glm::dvec4(colors0[i2]);
+        return a;
+    }
+    bool cutAway(unsigned triangle, double u, double v) const {
+        return cutout != nullptr && cutout->alpha(material, attributesAt(triangle, u, v)) < alphaCutoff;
+    }
 
     glm::dvec3 vertex(std::uint32_t i) const {
         return {vertices[3 * i], vertices[3 * i + 1], vertices[3 * i + 2]};
@@ -53,15 +70,23 @@ struct CullingContext {
     bool cullBackFaces = true;
 };
 
-void cullBackFacesFilter(const RTCFilterFunctionNArguments* args) {
+// Back faces of single-sided materials (closest hits only, when the context asks) and alpha cutouts.
+void surfaceFilter(const RTCFilterFunctionNArguments* args) {
     const auto* ctx = reinterpret_cast<const CullingContext*>(args->context);
-    if (!ctx->cullBackFaces) return;
     const auto* geometry = static_cast<const MeshRaycaster::Geometry*>(args->geometryUserPtr);
+    const bool cull = ctx->cullBackFaces && !geometry->doubleSided;
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        const glm::dvec3 dir(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
-                             RTCRayN_dir_z(args->ray, args->N, i));
-        if (glm::dot(dir, geometry->frontNormal(RTCHitN_primID(args->hit, args->N, i))) > 0.0) args->valid[i] = 0;
+        const unsigned triangle = RTCHitN_primID(args->hit, args->N, i);
+        if (cull) {
+            const glm::dvec3 dir(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                                 RTCRayN_dir_z(args->ray, args->N, i));
+            if (glm::dot(dir, geometry->frontNormal(triangle)) > 0.0) {
+                args->valid[i] = 0;
+                continue;
+            }
+        }
+        if (geometry->cutAway(triangle, RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i))) args->valid[i] = 0;
     }
 }
 
@@ -91,7 +116,7 @@ RTCRayHit makeRayHit(const glm::dvec3& relativeOrigin, const glm::dvec3& dir, do
 }  // namespace
 
 MeshRaycaster::MeshRaycaster(const assets::Scene& scene, const std::vector<glm::dmat4>& world)
-    : embree_(std::make_unique<EmbreeState>()) {
+    : embree_(std::make_unique<EmbreeState>()), materials_(std::make_unique<assets::MaterialSampler>(scene)) {
     const std::vector<bool> in = assets::nodesInScene(scene);
 
     // The origin: centre of the world-space vertex bounds, computed in double before any float.
@@ -134,8 +159,12 @@ MeshRaycaster::MeshRaycaster(const assets::Scene& scene, const std::vector<glm::
             g->mesh = mesh;
             g->primitive = static_cast<int>(pi);
             g->material = p.material;
-            g->doubleSided = p.material >= 0 && static_cast<std::size_t>(p.material) < scene.materials.size() &&
-                             scene.materials[static_cast<std::size_t>(p.material)].doubleSided;
+            const assets::Material& material = materials_->material(p.material);
+            g->doubleSided = material.doubleSided;
+            if (material.alphaMode == assets::AlphaMode::Mask) {
+                g->cutout = materials_.get();
+                g->alphaCutoff = material.alphaCutoff;
+            }
             g->mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
             g->vertices.resize(3 * vertexCount + 1, 0.0f);
             g->normals.resize(vertexCount);
@@ -149,6 +178,7 @@ MeshRaycaster::MeshRaycaster(const assets::Scene& scene, const std::vector<glm::
             g->indices.assign(p.indices.begin(), p.indices.end() - static_cast<std::ptrdiff_t>(p.indices.size() % 3));
             if (p.texcoords0.size() == vertexCount) g->texcoords0 = p.texcoords0;
             if (p.texcoords1.size() == vertexCount) g->texcoords1 = p.texcoords1;
+            if (p.colors0.size() == vertexCount) g->colors0 = p.colors0;
 
             RTCGeometry rg = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
             rtcSetSharedGeometryBuffer(rg, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, g->vertices.data(), 0,
@@ -156,7 +186,8 @@ MeshRaycaster::MeshRaycaster(const assets::Scene& scene, const std::vector<glm::
             rtcSetSharedGeometryBuffer(rg, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, g->indices.data(), 0,
                                        3 * sizeof(std::uint32_t), g->indices.size() / 3);
             rtcSetGeometryUserData(rg, g.get());
-            if (!g->doubleSided) rtcSetGeometryIntersectFilterFunction(rg, cullBackFacesFilter);
+            if (!g->doubleSided || g->cutout) rtcSetGeometryIntersectFilterFunction(rg, surfaceFilter);
+            if (g->cutout) rtcSetGeometryOccludedFilterFunction(rg, surfaceFilter);
             rtcCommitGeometry(rg);
             const unsigned id = rtcAttachGeometry(embree_->scene, rg);
             rtcReleaseGeometry(rg);
@@ -202,14 +233,12 @@ std::optional<MeshHit> MeshRaycaster::closestHit(const glm::dvec3& origin, const
     hit.primitive = g.primitive;
     hit.triangle = static_cast<int>(tri);
     hit.material = g.material;
-    if (!g.texcoords0.empty()) {
-        hit.hasTexcoord0 = true;
-        hit.texcoord0 = w * glm::dvec2(g.texcoords0[i0]) + u * glm::dvec2(g.texcoords0[i1]) + v * glm::dvec2(g.texcoords0[i2]);
-    }
-    if (!g.texcoords1.empty()) {
-        hit.hasTexcoord1 = true;
-        hit.texcoord1 = w * glm::dvec2(g.texcoords1[i0]) + u * glm::dvec2(g.texcoords1[i1]) + v * glm::dvec2(g.texcoords1[i2]);
-    }
+    const assets::SurfaceAttributes at = g.attributesAt(tri, u, v);
+    hit.hasTexcoord0 = !g.texcoords0.empty();
+    hit.hasTexcoord1 = !g.texcoords1.empty();
+    hit.texcoord0 = at.uv0;
+    hit.texcoord1 = at.uv1;
+    hit.color0 = at.color;
     return hit;
 }
 

@@ -1,8 +1,10 @@
-// Opaque meshes, Lambert-shaded with mesh shadows and what extensions add (the medium's
-// transmittance; shaders/opaque.*).
+// Opaque meshes, shaded with glTF's metallic-roughness BRDF, mesh shadows and what extensions add
+// (the medium's transmittance; shaders/opaque.*), one program variant per material's features.
 // Writes scene colour (linear RGBA32F, cleared to the background radiance) and reversed-Z depth,
 // which later passes read for soft particles and mesh–medium intersections.
 #include "passes.h"
+
+#include "material_binding.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -12,12 +14,16 @@ namespace nimbus::render {
 
 OpaquePass::OpaquePass() = default;
 
-const gpu::Program& OpaquePass::program(const std::vector<MeshShadingInput>& inputs) {
-    std::vector<std::string> defines;
-    for (const auto& input : inputs) defines.push_back(input.define);
-    auto it = programs_.find(defines);
-    if (it == programs_.end())
-        it = programs_.emplace(defines, gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = defines})).first;
+const gpu::Program& OpaquePass::program(unsigned features, const std::vector<MeshShadingInput>& inputs) {
+    std::vector<std::string> extensions;
+    for (const auto& input : inputs) extensions.push_back(input.define);
+    auto key = std::make_pair(features, extensions);
+    auto it = programs_.find(key);
+    if (it == programs_.end()) {
+        std::vector<std::string> defines = featureDefines(features);
+        defines.insert(defines.end(), extensions.begin(), extensions.end());
+        it = programs_.emplace(std::move(key), gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = defines})).first;
+    }
     return it->second;
 }
 
@@ -26,7 +32,6 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
         ResourceHandle color, depth, shadowMap;
         std::vector<std::pair<GLuint, ResourceHandle>> textures;  // the extensions' (unit, texture)
     };
-    const GLuint programId = program(context.meshShading).id();
     const int w = context.view.width, h = context.view.height;
     const auto& data = graph.addPass<Data>(
         "opaque",
@@ -37,7 +42,7 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
             for (const auto& input : context.meshShading)
                 for (const auto& [unit, texture] : input.textures) d.textures.emplace_back(unit, builder.read(texture));
         },
-        [&context, &shadows, programId, w, h](const PassResources& resources, const Data& d) {
+        [this, &context, &shadows, w, h](const PassResources& resources, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, resources.id(d.color), 0);
             glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, resources.id(d.depth), 0);
@@ -49,7 +54,6 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
             const float clearDepth = 0.0f;  // reversed Z: 0 is infinitely far
             glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
 
-            glUseProgram(programId);
             context.frameData->bind();
             for (const auto& input : context.meshShading)
                 if (input.bind) input.bind();
@@ -59,52 +63,49 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
             }
             for (const auto& [unit, texture] : d.textures) glBindTextureUnit(unit, resources.id(texture));
             gpu::applyPipeline({.depth = {.test = true, .compare = GL_GREATER, .write = true}});  // reversed Z
-            drawInstances(context, programId, {.normalMatrixLocation = 1, .cullSingleSided = true, .bindMaterial = true});
+            auto pick = [this, &context](const GpuMaterial& material, const GpuPrimitive& primitive) {
+                const unsigned features = materialFeatures(material, primitive);
+                return std::make_pair(program(features, context.meshShading).id(), features);
+            };
+            drawInstances(context, {.normalMatrixLocation = 1, .cullSingleSided = true, .shading = true, .program = pick});
             glBindSampler(kShadowMapUnit, 0);
         });
     context.sceneColor = data.color;
     context.sceneDepth = data.depth;
 }
 
-void drawInstances(const FrameContext& context, GLuint program, const DrawOptions& options) {
+void drawInstances(const FrameContext& context, const DrawOptions& options) {
     const GpuScene& scene = *context.input.gpuScene;
+    GLuint current = 0;
     for (const auto& instance : context.input.instances) {
         glm::dmat4 relative = instance.world;
         relative[3] -= glm::dvec4(context.view.origin, 0.0);
         const glm::mat4 model(relative);
-        glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, &model[0][0]);
-        if (options.normalMatrixLocation >= 0) {
-            const glm::mat3 normalMatrix(glm::inverseTranspose(glm::dmat3(instance.world)));
-            glProgramUniformMatrix3fv(program, options.normalMatrixLocation, 1, GL_FALSE, &normalMatrix[0][0]);
-        }
+        const glm::mat3 normalMatrix(glm::inverseTranspose(glm::dmat3(instance.world)));
         // A mirroring transform flips triangle winding; front faces follow the determinant's sign.
         const bool mirrored = glm::determinant(glm::dmat3(instance.world)) < 0.0;
         glFrontFace(mirrored ? GL_CW : GL_CCW);
         for (const auto& primitive : scene.primitives(instance.mesh)) {
             const GpuMaterial& material = scene.material(primitive.material);
-            if (options.cullSingleSided && !material.doubleSided) {
+            const auto [program, features] = options.program(material, primitive);
+            if (program != current) glUseProgram(current = program);
+            glProgramUniformMatrix4fv(program, 0, 1, GL_FALSE, &model[0][0]);
+            if (options.normalMatrixLocation >= 0)
+                glProgramUniformMatrix3fv(program, options.normalMatrixLocation, 1, GL_FALSE, &normalMatrix[0][0]);
+            if (options.cullSingleSided && !material.doubleSided()) {
                 glEnable(GL_CULL_FACE);
                 glCullFace(GL_BACK);
             } else {
                 glDisable(GL_CULL_FACE);
             }
-            if (options.bindMaterial) {
-                glProgramUniform4fv(program, 2, 1, &material.baseColorFactor[0]);
-                const int texCoord = material.texture >= 0 ? material.texCoord : -1;
-                glProgramUniform1i(program, 3, texCoord);
-                if (material.texture >= 0) {
-                    const GpuTexture& t = scene.texture(material.texture);
-                    glBindTextureUnit(0, t.texture.id());
-                    glBindSampler(0, t.sampler.id());
-                }
-            }
+            bindMaterial(program, scene, material, features, options.shading);
             glBindVertexArray(primitive.vertexArray.id());
             glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
         }
     }
     glFrontFace(GL_CCW);
     glBindVertexArray(0);
-    glBindSampler(0, 0);
+    for (const GLuint unit : {kBaseColorUnit, kMetallicRoughnessUnit, kEmissiveUnit}) glBindSampler(unit, 0);
 }
 
 }  // namespace nimbus::render

@@ -1,6 +1,8 @@
 #pragma once
+#include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 // The engine's own passes (one .cpp and one set of .glsl files each).
 #include "nimbus/gpu/gl_objects.h"
@@ -16,21 +18,24 @@ public:
     void add(FrameGraph& graph, FrameContext& context);
 
 private:
-    gpu::Program program_;
+    // Depth only, or with an alpha cutout (material_binding.h shadowFeatures), compiled on first use.
+    const gpu::Program& program(unsigned features);
+    std::map<unsigned, gpu::Program> programs_;
     gpu::Sampler compareSampler_;
     friend class OpaquePass;
 };
 
-// Lambert meshes with shadows into scene colour + depth (docs/design.md §3 step 2).
+// glTF metallic-roughness meshes with shadows into scene colour + depth (docs/design.md §3 step 2).
 class OpaquePass {
 public:
     OpaquePass();
     void add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows);
 
 private:
-    // The program with the extensions' mesh shading defines, compiled when first asked for.
-    const gpu::Program& program(const std::vector<MeshShadingInput>& inputs);
-    std::map<std::vector<std::string>, gpu::Program> programs_;
+    // The program for a material's features (material_binding.h) with the extensions' mesh shading
+    // defines, compiled when first asked for.
+    const gpu::Program& program(unsigned features, const std::vector<MeshShadingInput>& inputs);
+    std::map<std::pair<unsigned, std::vector<std::string>>, gpu::Program> programs_;
 };
 
 // media over opaque into the persistent output (docs/design.md §3 step 4).
@@ -48,14 +53,17 @@ private:
     gpu::Sampler clampedNearest_;  // the upsampling gathers depths at the layer's edges
 };
 
-// Draws every instance's primitives with uModel (location 0) and, when `normalMatrixLocation` ≥ 0,
-// the normal matrix; `perMaterial` sets material uniforms. Skips back faces of single-sided
-// materials when `cullSingleSided`.
+// Draws every instance's primitives, each with the program `options.program` picks for its material
+// and the material bound for it (material_binding.h), uModel at location 0 and, when
+// `normalMatrixLocation` ≥ 0, the normal matrix. Skips back faces of single-sided materials when
+// `cullSingleSided`; `shading`: the opaque pass's material terms, else the shadow pass's cutout.
 struct DrawOptions {
     int normalMatrixLocation = -1;
     bool cullSingleSided = false;
-    bool bindMaterial = false;
+    bool shading = false;
+    // The program for a primitive, and the features it was compiled with.
+    std::function<std::pair<GLuint, unsigned>(const GpuMaterial&, const GpuPrimitive&)> program;
 };
-void drawInstances(const FrameContext& context, GLuint program, const DrawOptions& options);
+void drawInstances(const FrameContext& context, const DrawOptions& options);
 
 }  // namespace nimbus::render

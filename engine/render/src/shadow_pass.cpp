@@ -1,19 +1,30 @@
 // Mesh shadow maps: every light view renders all meshes' depth into its layer of one D32F array.
 // Both faces are drawn (any triangle blocks light, as in the reference); a slope-scaled polygon
-// offset plus the lookup's normal offset keep lit surfaces from shadowing themselves.
+// offset plus the lookup's normal offset keep lit surfaces from shadowing themselves. MASK
+// materials cut their texels away (the same alpha test as the opaque pass), so a cutout casts the
+// shadow of what is left of it, on meshes and on the medium alike.
 #include <algorithm>
 
 #include "passes.h"
+
+#include "material_binding.h"
 
 #include "nimbus/gpu/shader_program.h"
 
 namespace nimbus::render {
 
 ShadowPass::ShadowPass() {
-    program_ = gpu::compileProgram({.vertex = "shadow_depth.vert", .fragment = "shadow_depth.frag"});
     compareSampler_ = gpu::createSampler(GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(compareSampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glSamplerParameteri(compareSampler_.id(), GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL);
+}
+
+const gpu::Program& ShadowPass::program(unsigned features) {
+    auto it = programs_.find(features);
+    if (it == programs_.end())
+        it = programs_.emplace(features, gpu::compileProgram({.vertex = "shadow_depth.vert", .fragment = "shadow_depth.frag",
+                                                              .defines = featureDefines(features)})).first;
+    return it->second;
 }
 
 void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
@@ -32,7 +43,6 @@ void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
         },
         [this, &context, size](const PassResources& resources, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glUseProgram(program_.id());
             glViewport(0, 0, size, size);
             // Reversed Z; the offset pushes stored depth away from the light.
             gpu::applyPipeline({.depth = {.test = true, .compare = GL_GREATER, .write = true},
@@ -47,8 +57,13 @@ void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
                     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
                     const float clearDepth = 0.0f;
                     glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
-                    glProgramUniformMatrix4fv(program_.id(), 1, 1, GL_FALSE, &view.viewProjection[0][0]);
-                    drawInstances(context, program_.id(), {});
+                    auto pick = [this, &view](const GpuMaterial& material, const GpuPrimitive& primitive) {
+                        const unsigned features = shadowFeatures(materialFeatures(material, primitive));
+                        const GLuint id = program(features).id();
+                        glProgramUniformMatrix4fv(id, 1, 1, GL_FALSE, &view.viewProjection[0][0]);
+                        return std::make_pair(id, features);
+                    };
+                    drawInstances(context, {.program = pick});
                 }
             }
 

@@ -118,7 +118,9 @@ void addBox(Json& root, Json& node) {
     const int normal = buffer.add(root, normals, kFloat, "VEC3", 24, 34962);
     const int index = buffer.add(root, indices, kUnsignedShort, "SCALAR", 36, 34963);
     buffer.finish(root);
-    root["materials"].push_back({{"name", node["name"]}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}}}});
+    // A matte grey: glTF's default metallicFactor is 1, so a non-metal says 0.
+    root["materials"].push_back({{"name", node["name"]},
+                                 {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}});
     Json primitive = {{"attributes", {{"POSITION", position}, {"NORMAL", normal}}},
                       {"indices", index},
                       {"material", root["materials"].size() - 1}};

@@ -88,9 +88,14 @@ void materialSection(EditorState& state, FieldWidgets& f, int node) {
         if (!p.contains("material") || std::find(seen.begin(), seen.end(), p["material"].get<int>()) != seen.end()) continue;
         const int material = p["material"].get<int>();
         seen.push_back(material);
-        const std::string path = "materials." + std::to_string(material) + ".pbrMetallicRoughness.baseColorFactor";
+        // The glTF factors (docs/scene-format.md §4.1), at glTF's defaults when the file omits them.
+        const std::string base = "materials." + std::to_string(material) + ".";
+        const std::string label = " of material " + std::to_string(material);
         ImGui::PushID(material);
-        f.vector(("base colour of material " + std::to_string(material)).c_str(), -1, path, 4, {1.0, 1.0, 1.0, 1.0}, 0.005f);
+        f.vector(("base colour" + label).c_str(), -1, base + "pbrMetallicRoughness.baseColorFactor", 4, {1.0, 1.0, 1.0, 1.0}, 0.005f);
+        f.number(("metallic" + label).c_str(), -1, base + "pbrMetallicRoughness.metallicFactor", 1.0, 0.005f);
+        f.number(("roughness" + label).c_str(), -1, base + "pbrMetallicRoughness.roughnessFactor", 1.0, 0.005f);
+        f.colour(("emissive" + label).c_str(), -1, base + "emissiveFactor", {0.0, 0.0, 0.0}, true);
         ImGui::PopID();
     }
     if (seen.empty()) ImGui::TextDisabled("the glTF default material (add one to the file to tune it)");

@@ -175,6 +175,9 @@ Scene loadScene(const std::filesystem::path& file) {
         Material material;
         const std::vector<double>& f = m.pbrMetallicRoughness.baseColorFactor;
         if (f.size() == 4) material.baseColorFactor = glm::vec4(glm::dvec4(f[0], f[1], f[2], f[3]));
+        material.metallicFactor = static_cast<float>(m.pbrMetallicRoughness.metallicFactor);
+        material.roughnessFactor = static_cast<float>(m.pbrMetallicRoughness.roughnessFactor);
+        if (m.emissiveFactor.size() == 3) material.emissiveFactor = glm::vec3(glm::dvec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]));
         material.doubleSided = m.doubleSided;
         scene.materials.push_back(material);
     }

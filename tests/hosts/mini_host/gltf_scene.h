@@ -46,8 +46,12 @@ struct Mesh {
     std::vector<Primitive> primitives;
 };
 
+// glTF metallic-roughness factors (glTF's defaults); textures are not read.
 struct Material {
     glm::vec4 baseColorFactor{1.0f};  // linear
+    float metallicFactor = 1.0f;
+    float roughnessFactor = 1.0f;
+    glm::vec3 emissiveFactor{0.0f};
     bool doubleSided = false;
 };
 

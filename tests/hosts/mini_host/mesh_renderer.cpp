@@ -129,7 +129,13 @@ void MeshRenderer::drawInstances(const FrameInput& frame, const DrawState& state
             } else {
                 glDisable(GL_CULL_FACE);
             }
-            if (state.material) glProgramUniform4fv(state.program, 2, 1, &material.baseColorFactor[0]);
+            if (state.material) {
+                glProgramUniform4fv(state.program, 2, 1, &material.baseColorFactor[0]);
+                glProgramUniform2f(state.program, 3, material.metallicFactor, material.roughnessFactor);
+                glProgramUniform3fv(state.program, 4, 1, &material.emissiveFactor[0]);
+                const glm::vec3 forward(frame.view.forward);
+                glProgramUniform4f(state.program, 5, forward.x, forward.y, forward.z, frame.view.orthographic ? 1.0f : 0.0f);
+            }
             glBindVertexArray(primitive.vertexArray.id());
             glDrawElements(GL_TRIANGLES, primitive.indexCount, GL_UNSIGNED_INT, nullptr);
         }

@@ -2,12 +2,17 @@
 // the same size and time, in each media mode and at a reduced media resolution. The plugin's passes
 // run on the same inputs in both, so the media match exactly; the images differ only where
 // mini_host's own mesh shading rounds differently (the point light of campfire.gltf, up to 3e-7).
+// mini_host shades glTF materials by their factors alone, so both render a copy of each scene
+// without its textures (withoutTextures).
 // Also: a bad command line exits 2 with one line, a broken extension exits 1 naming the field.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "../../scenes/process.h"
 #include "nimbus/assets/image_io.h"
@@ -24,6 +29,30 @@ constexpr double kStandardDepthRelRmse = 1e-4;
 
 std::filesystem::path miniHost() { return sandboxExecutable().parent_path() / "mini_host"; }
 std::string content(const std::string& scene) { return std::string(NIMBUS_CONTENT_DIR_FOR_TESTS) + "/scenes/" + scene + ".gltf"; }
+
+// A copy of a content scene in `folder` whose materials read no texture (its .bin copied beside it).
+std::string withoutTextures(const std::string& scene, const TempFolder& folder) {
+    const std::filesystem::path source = content(scene);
+    std::ifstream in(source);
+    nlohmann::json gltf = nlohmann::json::parse(in);
+    for (auto& m : gltf["materials"]) {
+        if (m.contains("pbrMetallicRoughness")) {
+            m["pbrMetallicRoughness"].erase("baseColorTexture");
+            m["pbrMetallicRoughness"].erase("metallicRoughnessTexture");
+        }
+        m.erase("emissiveTexture");
+    }
+    gltf.erase("textures");
+    gltf.erase("images");
+    gltf.erase("samplers");
+    for (const auto& buffer : gltf["buffers"]) {
+        const std::string uri = buffer["uri"].get<std::string>();
+        std::filesystem::copy_file(source.parent_path() / uri, folder / uri, std::filesystem::copy_options::overwrite_existing);
+    }
+    const std::filesystem::path out = folder / (scene + ".gltf");
+    std::ofstream(out) << gltf.dump();
+    return out.string();
+}
 
 struct Case {
     const char* scene;
@@ -48,12 +77,13 @@ class MiniHostMatchesSandbox : public ::testing::TestWithParam<Case> {};
 TEST_P(MiniHostMatchesSandbox, InEveryMode) {
     const Case c = GetParam();
     TempFolder folder;
+    const std::string scene = withoutTextures(c.scene, folder);
     for (const Mode& mode : kModes) {
         const std::string mini = (folder / (std::string(mode.name) + "_mini.exr")).string();
         const std::string nimbus = (folder / (std::string(mode.name) + "_nimbus.exr")).string();
-        std::vector<std::string> a{content(c.scene), "--size", "256x144", "--time", c.time, "--out", mini};
+        std::vector<std::string> a{scene, "--size", "256x144", "--time", c.time, "--out", mini};
         a.insert(a.end(), mode.mini.begin(), mode.mini.end());
-        std::vector<std::string> b{"render", content(c.scene), "--size", "256x144", "--time", c.time, "--quality", "exact", "--out", nimbus};
+        std::vector<std::string> b{"render", scene, "--size", "256x144", "--time", c.time, "--quality", "exact", "--out", nimbus};
         b.insert(b.end(), mode.sandbox.begin(), mode.sandbox.end());
         const ProcessResult ra = runProcess(miniHost(), a), rb = runProcess(sandboxExecutable(), b);
         ASSERT_EQ(ra.exitCode, 0) << mode.name << ": " << ra.describe() << "\n" << ra.err;

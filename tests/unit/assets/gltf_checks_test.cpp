@@ -103,6 +103,11 @@ INSTANTIATE_TEST_SUITE_P(
         MalformedCase{"buffer_length_mismatch.gltf", {"buffers[0]", "byteLength", "holds 36 bytes"}},
         MalformedCase{"texture_without_texcoord.gltf", {"meshes[0]", "attributes.TEXCOORD_0", "material \"Textured\" (materials[0])"}},
         MalformedCase{"base_color_out_of_range.gltf", {"materials[0]", "pbrMetallicRoughness.baseColorFactor[1]", "must be in [0.0, 1.0]"}},
+        MalformedCase{"alpha_cutoff_negative.gltf", {"material \"Leaves\" (materials[0])", "alphaCutoff", "-0.5"}},
+        MalformedCase{"emissive_texcoord_missing.gltf", {"meshes[0]", "attributes.TEXCOORD_1", "material \"Lamp\" (materials[0])", "emissiveTexture"}},
+        MalformedCase{"color_wrong_type.gltf", {"mesh \"Painted\" (meshes[0])", "attributes.COLOR_0", "SCALAR FLOAT", "expected VEC3"}},
+        MalformedCase{"alpha_blend.gltf", {"material \"Glass\" (materials[0])", "alphaMode", "BLEND is not supported"}},
+        MalformedCase{"texture_transform_bad_scale.gltf", {"materials[0]", "baseColorTexture.extensions.KHR_texture_transform.scale", "2 numbers"}},
         MalformedCase{"gltf_version_1.gltf", {"asset", "version", "\"1.0\""}},
         MalformedCase{"syntax_error.gltf", {"JSON", "malformed JSON", "line 2"}}),
     [](const ::testing::TestParamInfo<MalformedCase>& param) {

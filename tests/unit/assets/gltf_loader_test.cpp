@@ -25,8 +25,13 @@ TEST(GltfLoader, KhronosBoxHasItsCountsMaterialAndHierarchy) {
     EXPECT_EQ(scene.materials[0].baseColorFactor.g, 0.0f);
     EXPECT_EQ(scene.materials[0].baseColorFactor.b, 0.0f);
     EXPECT_EQ(scene.materials[0].baseColorFactor.a, 1.0f);
-    EXPECT_EQ(scene.materials[0].baseColorTexture, -1);
+    EXPECT_FALSE(scene.materials[0].baseColorTexture.present());
+    EXPECT_EQ(scene.materials[0].metallicFactor, 1.0f);  // glTF's defaults: the file gives only baseColorFactor
+    EXPECT_EQ(scene.materials[0].roughnessFactor, 1.0f);
+    EXPECT_EQ(scene.materials[0].alphaMode, AlphaMode::Opaque);
     EXPECT_FALSE(scene.materials[0].doubleSided);
+    EXPECT_TRUE(scene.environment.defaultAmbient);  // no lights and no NIMBUS root object
+    EXPECT_EQ(scene.environment.ambient, glm::vec3(kDefaultAmbient));
     EXPECT_EQ(p.boundsMin, glm::vec3(-0.5f));
     EXPECT_EQ(p.boundsMax, glm::vec3(0.5f));
 
@@ -44,8 +49,9 @@ TEST(GltfLoader, CubeBaseColorTextureDecodesWithOpenImageIo) {
     const Scene scene = loadScene(dataPath("tinygltf/Cube/Cube.gltf"));
     ASSERT_EQ(scene.materials.size(), 1u);
     const Material& m = scene.materials[0];
-    ASSERT_EQ(m.baseColorTexture, 0);
-    EXPECT_EQ(m.baseColorTexCoord, 0);
+    ASSERT_EQ(m.baseColorTexture.texture, 0);
+    EXPECT_EQ(m.baseColorTexture.texCoord, 0);
+    EXPECT_EQ(m.metallicRoughnessTexture.texture, 1);
     const Texture& t = scene.textures[0];
     ASSERT_EQ(t.image, 0);
     EXPECT_EQ(t.wrapS, Wrap::Repeat);  // the file's sampler is {}: glTF defaults
@@ -136,6 +142,20 @@ TEST(GltfLoader, TinyGltfExtensionRegressionsLoad) {
     EXPECT_FALSE(textransform.meshes.empty());
 }
 
+TEST(GltfLoader, TextureTransformIsOneAffineMap) {
+    // Cube-textransform's metallicRoughnessTexture: offset (0, 1), rotation π/2, scale 0.5:
+    // uv' = offset + R(π/2)·S·uv = (−0.5 v, 1 + 0.5 u); its emissive texture flips v: (u, 1 − v).
+    const Scene scene = loadScene(dataPath("tinygltf/Cube-texture-ext/Cube-textransform.gltf"));
+    const TextureRef& mr = scene.materials[1].metallicRoughnessTexture;
+    const glm::dvec2 a = mr.transform({0.2, 0.6});
+    EXPECT_NEAR(a.x, -0.3, 1e-6);
+    EXPECT_NEAR(a.y, 1.1, 1e-6);
+    const glm::dvec2 b = scene.materials[0].emissiveTexture.transform({0.2, 0.6});
+    EXPECT_NEAR(b.x, 0.2, 1e-7);
+    EXPECT_NEAR(b.y, 0.4, 1e-7);
+    EXPECT_FALSE(scene.materials[1].baseColorTexture.transform({0.2, 0.6}) != glm::dvec2(0.2, 0.6));  // no transform: identity
+}
+
 TEST(GltfLoader, SkinnedRegressionLoadsWithItsAnimation) {
     const Scene scene = loadScene(dataPath("tinygltf/regression/unassigned-skeleton.gltf"));
     ASSERT_EQ(scene.animations.size(), 1u);
@@ -204,13 +224,25 @@ TEST(GltfLoader, NodeExtensionsAreKeptExactlyAsWritten) {
     EXPECT_TRUE(scene.nodes[0].extensions.empty());
 }
 
-TEST(GltfLoader, EnvironmentDefaultsToBlack) {
+TEST(GltfLoader, PlainFileWithoutLightsGetsTheDefaultAmbientOnBlack) {
     const Scene scene = loadScene(dataPath("khronos/Box/Box.gltf"));
     EXPECT_EQ(scene.environment.background, glm::vec3(0.0f));
-    EXPECT_EQ(scene.environment.ambient, glm::vec3(0.0f));
+    EXPECT_EQ(scene.environment.ambient, glm::vec3(kDefaultAmbient));  // docs/scene-format.md §4
+    EXPECT_TRUE(scene.environment.defaultAmbient);
     EXPECT_TRUE(scene.extensions.is_object());
     EXPECT_TRUE(scene.lights.empty());
     EXPECT_TRUE(scene.cameras.empty());
+}
+
+TEST(GltfLoader, LightsOrOurRootObjectKeepTheAmbientAsWritten) {
+    // lights_cameras.gltf has lights and writes its ambient: that one, no default.
+    const Scene lit = loadScene(dataPath("scenes/lights_cameras.gltf"));
+    EXPECT_FALSE(lit.environment.defaultAmbient);
+    EXPECT_EQ(lit.environment.ambient, glm::vec3(0.01f, 0.02f, 0.03f));
+    // A glTF file with lights and no NIMBUS object (tinygltf's issue-261 has a point light): none either.
+    const Scene plain = loadScene(dataPath("tinygltf/Extensions-overwrite-issue261/issue-261.gltf"));
+    EXPECT_FALSE(plain.environment.defaultAmbient);
+    EXPECT_EQ(plain.environment.ambient, glm::vec3(0.0f));
 }
 
 }  // namespace

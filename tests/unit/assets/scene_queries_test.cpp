@@ -129,7 +129,27 @@ TEST(SceneQueries, UnknownCameraNameIsRefusedListingTheCameras) {
     } catch (const InputError& e) {
         const std::string m = e.what();
         EXPECT_NE(m.find("camera \"Nope\""), std::string::npos) << m;
-        EXPECT_NE(m.find("\"WideCam\", \"TopCam\""), std::string::npos) << m;
+        EXPECT_NE(m.find("0 \"WideCam\", 1 \"TopCam\""), std::string::npos) << m;
+        EXPECT_TRUE(test::isOneLine(m));
+    }
+}
+
+TEST(SceneQueries, CameraIsFoundByIndexAndUnnamedOnesAreListedByIndex) {
+    // Khronos Cameras.gltf: two unnamed cameras at one place, cameras[1] orthographic.
+    const Scene s = loadScene(dataPath("khronos/Cameras/Cameras.gltf"));
+    const auto world = computeWorldTransforms(s, 0.0);
+    EXPECT_EQ(resolveCamera(s, world, "", Aabb{}, 1.0).params.projection, Projection::Perspective);
+    const ResolvedCamera ortho = resolveCamera(s, world, "1", Aabb{}, 1.0);
+    EXPECT_EQ(ortho.params.projection, Projection::Orthographic);
+    EXPECT_EQ(ortho.name, "camera 1");
+    EXPECT_EQ(resolveCamera(s, world, "0", Aabb{}, 1.0).params.projection, Projection::Perspective);
+    try {
+        resolveCamera(s, world, "2", Aabb{}, 1.0);
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("Cameras.gltf"), std::string::npos) << m;
+        EXPECT_NE(m.find("0 (unnamed), 1 (unnamed)"), std::string::npos) << m;
         EXPECT_TRUE(test::isOneLine(m));
     }
 }

@@ -1,5 +1,6 @@
 #pragma once
 // Test helper: scenes built in memory (no file), for the raycaster and the reference renderer.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -50,14 +51,41 @@ inline assets::Primitive box(const glm::vec3& lo, const glm::vec3& hi, int mater
     return out;
 }
 
+// A UV sphere: `columns` × `rows` quads, counter-clockwise seen from outside, vertex normals the
+// exact sphere normals (interpolated across a triangle they stay within O(h²) of it, h = π/rows).
+inline assets::Primitive sphere(const glm::vec3& centre, float radius, int columns, int rows, int material = -1) {
+    assets::Primitive p;
+    const double pi = 3.14159265358979323846;
+    for (int r = 0; r <= rows; ++r)
+        for (int c = 0; c <= columns; ++c) {
+            const double theta = pi * r / rows, phi = 2.0 * pi * c / columns;
+            const glm::dvec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+            p.normals.push_back(glm::vec3(n));
+            p.positions.push_back(centre + radius * glm::vec3(n));
+            p.texcoords0.push_back(glm::vec2(float(c) / columns, float(r) / rows));
+        }
+    const auto at = [&](int r, int c) { return static_cast<std::uint32_t>(r * (columns + 1) + c); };
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < columns; ++c) {
+            if (r > 0) p.indices.insert(p.indices.end(), {at(r, c), at(r + 1, c), at(r, c + 1)});
+            if (r + 1 < rows) p.indices.insert(p.indices.end(), {at(r, c + 1), at(r + 1, c), at(r + 1, c + 1)});
+        }
+    p.material = material;
+    p.boundsMin = centre - glm::vec3(radius);
+    p.boundsMax = centre + glm::vec3(radius);
+    return p;
+}
+
 class SceneBuilder {
 public:
     assets::Scene scene;
 
-    int addMaterial(const glm::vec3& color, bool doubleSided = false) {
+    // A rough dielectric (metallic 0, roughness 1: glTF's closest to Lambert) unless `metallic`.
+    int addMaterial(const glm::vec3& color, bool doubleSided = false, float metallic = 0.0f) {
         assets::Material m;
         m.baseColorFactor = glm::vec4(color, 1.0f);
         m.doubleSided = doubleSided;
+        m.metallicFactor = metallic;
         scene.materials.push_back(m);
         return static_cast<int>(scene.materials.size()) - 1;
     }

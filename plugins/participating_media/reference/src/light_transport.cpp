@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "nimbus/assets/light_model.h"
+#include "nimbus/assets/surface_brdf.h"
 #include "nimbus/media/optics.h"
 
 namespace nimbus::media::reference {
@@ -89,9 +90,11 @@ glm::dvec3 LightTransport::mediumSource(const glm::dvec3& origin, const glm::dve
 }
 
 glm::dvec3 LightTransport::surfaceRadiance(const raycast::MeshHit& hit, const glm::dvec3& dir, bool doubleSided,
-                                           const glm::dvec3& baseColor) const {
+                                           const assets::MaterialSample& material) const {
     glm::dvec3 n = hit.shadingNormal;
     if (doubleSided && glm::dot(n, dir) > 0.0) n = -n;  // face the viewer
+    const glm::dvec3 base(material.baseColor);
+    const assets::SurfaceBrdf brdf = assets::surfaceBrdf(base, material.metallic, material.roughness);
     glm::dvec3 direct(0.0);
     for (const assets::ResolvedLight& light : lights_) {
         const assets::LightSample sample = assets::sampleLight(light, hit.position);
@@ -99,9 +102,9 @@ glm::dvec3 LightTransport::surfaceRadiance(const raycast::MeshHit& hit, const gl
         if (!(cosine > 0.0) || sample.irradiance == glm::dvec3(0.0)) continue;
         if (meshes_.occludedFromSurface(hit, sample.toLight, sample.distance)) continue;
         const double T = transmittanceToLight(hit.position, sample.toLight, sample.distance);
-        direct += sample.irradiance * (cosine * T);
+        direct += sample.irradiance * T * assets::brdfTimesCosine(brdf, n, -dir, sample.toLight, cosine);
     }
-    return baseColor * (direct / kPi + surfaceAmbient_);
+    return direct + base * surfaceAmbient_ + material.emissive;
 }
 
 }  // namespace nimbus::media::reference

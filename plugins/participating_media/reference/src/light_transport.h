@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "nimbus/assets/material_sampling.h"
 #include "nimbus/assets/scene_queries.h"
 #include "nimbus/media/particle_bvh.h"
 #include "nimbus/media/particle_set.h"
@@ -50,9 +51,10 @@ public:
     glm::dvec3 mediumSource(const glm::dvec3& origin, const glm::dvec3& dir, const ViewRayMedium& medium,
                             std::uint32_t piece, double t, std::vector<double>& weights) const;
 
-    // L_s = baseColor/π Σ_l E_l max(0, n·l) V_l T_l + baseColor L_amb at a mesh hit seen along dir.
+    // L_s = Σ_l f(l, v) E_l max(0, n·l) V_l T_l + baseColor L_amb + emissive at a mesh hit seen along
+    // dir (v = −dir), f the glTF BRDF of assets/surface_brdf.h.
     glm::dvec3 surfaceRadiance(const raycast::MeshHit& hit, const glm::dvec3& dir, bool doubleSided,
-                               const glm::dvec3& baseColor) const;
+                               const assets::MaterialSample& material) const;
 
 private:
     const std::vector<assets::ResolvedLight>& lights_;

@@ -7,11 +7,11 @@
 #include <stdexcept>
 #include <thread>
 
-#include "base_color.h"
 #include "light_transport.h"
 #include "medium_quadrature.h"
 #include "nimbus/assets/light_model.h"
 #include "nimbus/assets/fog.h"
+#include "nimbus/assets/material_sampling.h"
 #include "nimbus/base/progress.h"
 #include "nimbus/media/optics.h"
 #include "nimbus/media/particle_bvh.h"
@@ -72,7 +72,7 @@ struct ReferenceRenderer::Impl {
     std::unique_ptr<ScatteringPaths> paths;  // multiple scattering with a medium
     ParticleBvh bvh;
     std::unique_ptr<raycast::MeshRaycaster> meshes;
-    std::unique_ptr<BaseColorSampler> baseColor;
+    std::unique_ptr<assets::MaterialSampler> materials;
     std::unique_ptr<LightTransport> light;
     CameraFrame frame;
     glm::dvec3 background{0.0}, ambient{0.0};
@@ -102,7 +102,7 @@ ReferenceRenderer::ReferenceRenderer(const ReferenceInputs& inputs, const Refere
     m.volumes = inputs.volumes ? inputs.volumes : &m.noVolumes;
     m.bvh.build(*m.particles);
     m.meshes = std::make_unique<raycast::MeshRaycaster>(*inputs.scene, *inputs.world);
-    m.baseColor = std::make_unique<BaseColorSampler>(*inputs.scene);
+    m.materials = std::make_unique<assets::MaterialSampler>(*inputs.scene);
     m.background = glm::dvec3(inputs.scene->environment.background);
     m.ambient = glm::dvec3(inputs.scene->environment.ambient);
     const assets::Scattering model = settings.scattering.value_or(inputs.scene->environment.scattering);
@@ -171,7 +171,7 @@ RayRadiance ReferenceRenderer::Impl::trace(const glm::dvec3& origin, const glm::
     const bool fogged = fog.mode != assets::FogMode::None;
     glm::dvec3 behind(0.0);  // T(0,d) L_s; skipped when nothing of it gets through
     if (out.transmittance > 0.0) {
-        out.surface = hit ? light->surfaceRadiance(*hit, dir, doubleSided(hit->material), baseColor->at(*hit)) : background;
+        out.surface = hit ? light->surfaceRadiance(*hit, dir, doubleSided(hit->material), materials->sample(hit->material, hit->attributes())) : background;
         if (fogged)
             out.surface = assets::applyFog(fog, assets::fogFactor(fog, origin.y, dir.y, hit ? hit->distance : fogReach), out.surface);
         behind = out.transmittance * out.surface;

@@ -1,6 +1,7 @@
 #version 450 core
-// Lambert: L = base·L_amb + Σ_l base/π · E_l · max(0, n·l) · V_shadow · T_l, with T_l the media
-// plugin's light transmittance when compiled with MEDIA_LIGHT_TRANSMITTANCE (1 otherwise).
+// glTF metallic-roughness factors: L = base·L_amb + emissive + Σ_l f(l, v) · E_l · max(0, n·l) ·
+// V_shadow · T_l, f the glTF spec's appendix B BRDF (Schlick F, GGX D, separable Smith visibility),
+// T_l the media plugin's light transmittance when compiled with MEDIA_LIGHT_TRANSMITTANCE (1 otherwise).
 #include "mini_frame.glsl"
 #include "mini_lights.glsl"
 #include "mini_shadows.glsl"
@@ -18,7 +19,32 @@
 in vec3 vPosition;
 in vec3 vNormal;
 
-layout(location = 2) uniform vec4 uBaseColor;  // glTF baseColorFactor (linear)
+layout(location = 2) uniform vec4 uBaseColor;          // glTF baseColorFactor (linear)
+layout(location = 3) uniform vec2 uMetallicRoughness;  // metallicFactor, roughnessFactor
+layout(location = 4) uniform vec3 uEmissive;           // emissiveFactor
+layout(location = 5) uniform vec4 uViewForward;        // xyz camera forward, w 1 when orthographic
+
+// f(l, v)·(n·l) for n·l = nl > 0; roughness below 0.03 is taken as 0.03.
+vec3 miniBrdfCosine(vec3 base, vec3 n, vec3 v, vec3 l, float nl) {
+    float metallic = uMetallicRoughness.x;
+    float r = max(uMetallicRoughness.y, 0.03);
+    float alpha = r * r;
+    float a2 = alpha * alpha;
+    vec3 diffuse = base * ((1.0 - metallic) * MINI_INV_PI);
+    vec3 f0 = mix(vec3(0.04), base, metallic);
+    vec3 h = l + v;
+    h *= inversesqrt(max(dot(h, h), 1e-24));
+    float vh = clamp(dot(v, h), 0.0, 1.0);
+    float nh = dot(n, h);
+    float nv = abs(dot(n, v));
+    float m = 1.0 - vh;
+    float m2 = m * m;
+    vec3 fresnel = f0 + (1.0 - f0) * (m2 * m2 * m);
+    float d = nh * nh * (a2 - 1.0) + 1.0;
+    float distribution = nh > 0.0 ? a2 / (3.14159265358979323846 * d * d) : 0.0;
+    float visibility = 1.0 / ((nl + sqrt(a2 + (1.0 - a2) * nl * nl)) * (nv + sqrt(a2 + (1.0 - a2) * nv * nv)));
+    return ((1.0 - fresnel) * diffuse + fresnel * (distribution * visibility)) * nl;
+}
 
 layout(location = 0) out vec4 outRadiance;
 
@@ -27,7 +53,8 @@ void main() {
     vec3 n = normalize(vNormal);
     if (!gl_FrontFacing) n = -n;  // only double-sided materials are seen from behind
 
-    vec3 radiance = base * miniFrame.ambient.rgb;
+    vec3 v = uViewForward.w > 0.5 ? -uViewForward.xyz : -normalize(vPosition);
+    vec3 radiance = base * miniFrame.ambient.rgb + uEmissive;
     int i = 0;
     if (miniFrame.counts.x > 0) do {
         vec3 toLight;
@@ -40,7 +67,7 @@ void main() {
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
         transmittance = mediaTransmittance(i, miniLights[i].position.xyz, vPosition);
 #endif
-        radiance += base * MINI_INV_PI * irradiance * (cosine * visibility * transmittance);
+        radiance += miniBrdfCosine(base, n, v, toLight, cosine) * irradiance * (visibility * transmittance);
     } while (++i < miniFrame.counts.x);
     outRadiance = vec4(radiance, 1.0);
 }

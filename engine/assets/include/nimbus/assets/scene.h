@@ -3,7 +3,9 @@
 // KHR_lights_punctual lights, node animation) plus the raw extension objects that plugins parse.
 // Everything is validated at load time: a Scene that exists is complete and in range.
 //
-// Does not: keep skins, morph targets or PBR terms beyond baseColor (docs/design.md §2 shades Lambert).
+// Materials are glTF's metallic-roughness model (docs/scene-format.md §4.1 says how it is shaded).
+// Does not: keep skins, morph targets, normal or occlusion textures, or material extensions other
+// than KHR_texture_transform.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -39,11 +41,35 @@ struct Texture {
     bool mipmaps = true;  // minFilter asked for a mipmapped mode (or left it to us)
 };
 
+// A textureInfo: which texture, which TEXCOORD_n set, and KHR_texture_transform as one affine map
+// uv' = (dot(row0, (u, v, 1)), dot(row1, (u, v, 1))) = offset + rotation · scale · uv.
+struct TextureRef {
+    int texture = -1;  // index into Scene::textures, -1 for none
+    int texCoord = 0;  // the TEXCOORD_n set it reads (KHR_texture_transform's texCoord wins)
+    glm::vec3 row0{1.0f, 0.0f, 0.0f};
+    glm::vec3 row1{0.0f, 1.0f, 0.0f};
+
+    bool present() const { return texture >= 0; }
+    glm::dvec2 transform(const glm::dvec2& uv) const {
+        return {row0.x * uv.x + row0.y * uv.y + row0.z, row1.x * uv.x + row1.y * uv.y + row1.z};
+    }
+};
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// glTF 2.0's metallic-roughness material. The defaults are glTF's, so a Material{} is the glTF
+// default material: white, metallic 1, roughness 1, single-sided.
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f};  // linear
-    int baseColorTexture = -1;        // index into Scene::textures, -1 for none
-    int baseColorTexCoord = 0;        // which TEXCOORD_n set the texture reads
+    TextureRef baseColorTexture;      // sRGB-encoded rgb, linear alpha
+    float metallicFactor = 1.0f;
+    float roughnessFactor = 1.0f;
+    TextureRef metallicRoughnessTexture;  // linear: roughness in green, metalness in blue
+    glm::vec3 emissiveFactor{0.0f};       // linear radiance
+    TextureRef emissiveTexture;           // sRGB-encoded
+    AlphaMode alphaMode = AlphaMode::Opaque;  // Blend is refused at load (docs/scene-format.md §4.1)
+    float alphaCutoff = 0.5f;                 // Mask: alpha below it is cut away
     bool doubleSided = false;
 };
 
@@ -53,6 +79,7 @@ struct Primitive {
     std::vector<glm::vec3> normals;    // always present: flat normals are computed when the file has none
     std::vector<glm::vec2> texcoords0; // empty when the primitive has no TEXCOORD_0
     std::vector<glm::vec2> texcoords1; // empty when the primitive has no TEXCOORD_1
+    std::vector<glm::vec4> colors0;    // COLOR_0 as linear RGBA (alpha 1 for VEC3); empty when absent
     std::vector<std::uint32_t> indices;  // always present: 0..n-1 for non-indexed input
     int material = -1;                 // -1: the glTF default material (white, single-sided)
     glm::vec3 boundsMin{0.0f};
@@ -144,9 +171,14 @@ struct Fog {
 // ambient an unshadowed sky every point of the medium scatters.
 enum class Scattering { Multiple, Single };
 
+// A file without the root NIMBUS_participating_media object and without lights gets this ambient
+// beside the default sun (docs/scene-format.md §4), as glTF viewers light such files.
+inline constexpr float kDefaultAmbient = 0.3f;
+
 struct Environment {
     glm::vec3 background{0.0f};  // radiance of rays that hit nothing
     glm::vec3 ambient{0.0f};     // multiple: the environment's radiance; single: unshadowed sky radiance
+    bool defaultAmbient = false; // ambient is kDefaultAmbient because the file gives neither lights nor ambient
     Fog fog;
     Scattering scattering = Scattering::Multiple;
 };

@@ -41,9 +41,10 @@ struct ResolvedCamera {
 };
 
 // The scene's first camera (lowest node index in the scene carrying one), or the camera whose camera name or node
-// name is `name`. With no camera in the scene and no name asked, one is made that frames `frame`
-// (the caller passes mesh bounds plus anything else visible, e.g. media). Throws InputError when
-// `name` matches nothing.
+// name is `name`, or else, when `name` is a decimal number, the first node carrying cameras[name]
+// (unnamed cameras are picked by index). With no camera in the scene and no name asked, one is
+// made that frames `frame` (the caller passes mesh bounds plus anything else visible, e.g. media).
+// Throws InputError when `name` matches nothing, listing the cameras by index and name.
 ResolvedCamera resolveCamera(const Scene& scene, const std::vector<glm::dmat4>& world, std::string_view name,
                              const Aabb& frame, double aspect);
 

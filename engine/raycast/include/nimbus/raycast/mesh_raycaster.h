@@ -10,14 +10,19 @@
 // faces of single-sided materials by default (the rasteriser culls them); occlusion queries are
 // blocked by every face.
 //
-// Does not: shade, sample textures, animate (rebuild it for another time), or intersect anything
-// but triangles. Queries are const and thread-safe.
+// Alpha cutouts: a triangle of a MASK material is no surface where its base colour's alpha
+// (assets/material_sampling.h) is below alphaCutoff, for closest hits and occlusion alike (an
+// Embree filter function), as the rasteriser discards those fragments and shadow-map texels.
+//
+// Does not: shade, animate (rebuild it for another time), or intersect anything but triangles.
+// Queries are const and thread-safe.
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "nimbus/assets/material_sampling.h"
 #include "nimbus/assets/scene.h"
 
 namespace nimbus::raycast {
@@ -35,6 +40,10 @@ struct MeshHit {
     int material = -1;             // -1: the glTF default material
     bool hasTexcoord0 = false, hasTexcoord1 = false;
     glm::dvec2 texcoord0{0.0}, texcoord1{0.0};
+    glm::dvec4 color0{1.0};        // COLOR_0 interpolated, 1 when the primitive has none
+
+    // What material_sampling.h evaluates the material with (absent sets read as (0, 0)).
+    assets::SurfaceAttributes attributes() const { return {texcoord0, texcoord1, color0}; }
 };
 
 enum class FaceCulling {
@@ -78,6 +87,7 @@ public:
 private:
     struct EmbreeState;
     std::unique_ptr<EmbreeState> embree_;
+    std::unique_ptr<assets::MaterialSampler> materials_;  // alpha cutouts
     std::vector<std::unique_ptr<Geometry>> geometries_;
     glm::dvec3 origin_{0.0};
     std::size_t triangleCount_ = 0;

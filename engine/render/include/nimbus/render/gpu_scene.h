@@ -15,21 +15,25 @@ namespace nimbus::render {
 
 struct GpuPrimitive {
     gpu::VertexArray vertexArray;
-    gpu::Buffer vertices;  // interleaved: position, normal, uv0, uv1 (10 floats)
+    gpu::Buffer vertices;  // interleaved: position, normal, uv0, uv1, COLOR_0 (14 floats)
     gpu::Buffer indices;
     GLsizei indexCount = 0;
     int material = -1;
+    bool vertexColors = false;  // the primitive has COLOR_0 (otherwise its colour is 1)
 };
 
+// A material as the opaque and shadow passes draw it (assets::Material with GPU texture indices).
 struct GpuMaterial {
-    glm::vec4 baseColorFactor{1.0f};
-    int texture = -1;  // index into GpuScene::textures
-    int texCoord = 0;
-    bool doubleSided = false;
+    assets::Material params;
+    bool doubleSided() const { return params.doubleSided; }
+    bool masked() const { return params.alphaMode == assets::AlphaMode::Mask; }
 };
 
+// One glTF texture, uploaded once per way it is read: sRGB-encoded (base colour, emissive) and/or
+// linear (metallic-roughness). A texture never read one way has no GL texture for it.
 struct GpuTexture {
-    gpu::Texture texture;
+    gpu::Texture srgb;
+    gpu::Texture linear;
     gpu::Sampler sampler;
 };
 

@@ -18,11 +18,13 @@
 //   all particles (a BVH finds them); optical depth beyond 64 counts as opaque (T < 2e-28).
 // - cosθ_l = dot(light travel direction, -ray dir): g > 0 is bright looking towards the sun.
 //   Henyey–Greenstein p = (1-g²)/(4π(1+g²-2g cosθ)^1.5); Rayleigh p = 3/(16π)(1+cos²θ).
-// - Surface: L_s = baseColor/π Σ_l E_l max(0, n·l) V_l T_l + baseColor L_amb. baseColor = material
-//   factor × texture: texels sRGB-decoded, then bilinear (nearest when the sampler's magFilter is
-//   NEAREST), the sampler's wrap modes, texel centres at (i + 0.5)/size, no mipmaps. n: the
+// - Surface: L_s = Σ_l f(l, v) E_l max(0, n·l) V_l T_l + baseColor L_amb + emissive, f the glTF
+//   metallic-roughness BRDF (assets/surface_brdf.h), v = −dir; baseColor (factor × texture ×
+//   COLOR_0), metallic, roughness and emissive from assets/material_sampling.h. n: the
 //   interpolated shading normal, flipped towards the viewer for double-sided materials. Surface
 //   shadow rays start off the surface (MeshRaycaster::offsetFromSurface); T_l is taken at the hit.
+//   MASK materials are cut away where their alpha is below alphaCutoff, for every ray (the ray
+//   caster's filter).
 // - Quadrature: the in-scattering integral is taken in the variable v = 1 - exp(-τ(t)) per cluster of
 //   overlapping particles, where T σ_t dt = T(cluster start) dv exactly, so the integrand is the
 //   (σ-weighted) source alone and the kernels' truncation steps and gaps between particles cost
@@ -37,8 +39,8 @@
 // - Deterministic: each pixel depends only on the inputs (no shared accumulation), so the image has
 //   the same bits for any thread count.
 //
-// Does not: light reflected by meshes into the medium, anti-aliasing, motion blur, mesh emission or
-// PBR terms beyond baseColor, or alpha (meshes are opaque).
+// Does not: light reflected or emitted by meshes into the medium or onto other meshes,
+// anti-aliasing, motion blur, normal or occlusion textures, or image-based lighting.
 #include <atomic>
 #include <cstddef>
 #include <memory>
