@@ -16,7 +16,9 @@ TEST(ImageIo, FilmicRollsHighlightsOffMonotonically) {
     for (int i = 1; i <= 1000; ++i) {
         const float x = 0.02f * static_cast<float>(i);
         const float y = applyToneCurve(x, ToneCurve::Filmic);
-        if (x < 5.0f) EXPECT_GT(y, previous) << x;
+        if (x < 5.0f) {
+            EXPECT_GT(y, previous) << x;
+        }
         EXPECT_GE(y, previous);
         EXPECT_LE(y, 1.0f);
         previous = y;
