@@ -147,6 +147,17 @@ MediaRenderSettings readMediaSettings(World& world) {
     return media::readMediaSettings(*settings, table);
 }
 
+void refuseIdleSettings(World& world) {
+    const auto* settings = world.tryResource<Settings>();
+    if (settings == nullptr) return;
+    const auto* asset = world.tryResource<scene::SceneAsset>();
+    const bool multiple = asset == nullptr || asset->scene == nullptr || asset->scene->environment.scattering == assets::Scattering::Multiple;
+    for (const IdleSetting& idle : idleSettings(*settings, world.resource<MediaTechniques>().table, multiple)) {
+        if (settings->isDefault(idle.key)) log::warn(describeInputProblem(settings->origin(idle.key), "", "", idle.why + "; ignored"));
+        else throwInputError(settings->origin(idle.key), idle.key, "", idle.why);
+    }
+}
+
 void gatherParticles(World& world, ParticleSet& out) {
     // Static clouds then emitters, each in glTF node order, as media::particlesAtTime does: views
     // visit entities in storage order, so sort by node to make the set independent of it.
