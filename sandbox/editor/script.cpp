@@ -118,6 +118,13 @@ const std::map<std::string, Handler>& handlers() {
 std::vector<ScriptLine> readScript(const std::filesystem::path& file) {
     std::ifstream in(file);
     if (!in) throwInputError(file.string(), "", "", "cannot read the script");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseScript(text.str());
+}
+
+std::vector<ScriptLine> parseScript(const std::string& script) {
+    std::istringstream in(script);
     std::vector<ScriptLine> lines;
     std::string text;
     for (int number = 1; std::getline(in, text); ++number) {
