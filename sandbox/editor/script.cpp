@@ -135,9 +135,15 @@ std::vector<ScriptLine> parseScript(const std::string& script) {
 }
 
 void runScriptLine(ScriptTarget& target, const std::filesystem::path& script, const ScriptLine& line) {
+    const std::string where = script.string() + ":" + std::to_string(line.number);
+    // Names and paths go into the glTF JSON, which is UTF-8 text.
+    try {
+        (void)Json(line.text).dump();
+    } catch (const Json::type_error&) {
+        throwInputError(where, "", "", "the line is not UTF-8 text");
+    }
     const Command command = split(line.text);
     const auto it = handlers().find(command.name);
-    const std::string where = script.string() + ":" + std::to_string(line.number);
     if (it == handlers().end()) throwInputError(where, command.name, "", "unknown command");
     try {
         it->second(target, command);

@@ -76,6 +76,7 @@ void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaSce
     });
     for (const MediaNode& node : media.nodes) {
         const Entity e = byNode.at(static_cast<std::size_t>(node.node));
+        if (e == nimbus::ecs::kNullEntity) continue;  // outside the displayed scene: not drawn, as its mesh is not
         world.emplace<MediumComponent>(e, MediumComponent{node.medium});
         if (!node.localPositions.empty() && !hasUniformScale(world.get<scene::Transform>(e).world))
             log::warn(scene.displayName() + ": node \"" + node.name + "\": non-uniform scale on a particle cloud; radii use the mean scale");
