@@ -68,7 +68,8 @@ media::ParticleSet syntheticCloud(std::size_t count, const assets::Aabb& bounds,
     media::ParticleSet set;
     set.reserve(count);
     while (set.size() < count) {
-        const glm::dvec3 p(uniform(), uniform(), uniform());
+        const double z = uniform(), y = uniform(), x = uniform();  // in sequence: the same cloud from every compiler
+        const glm::dvec3 p(x, y, z);
         if (glm::dot(p, p) > 1.0) continue;
         set.push(centre + p * half, static_cast<float>(radius), sigma, medium);
     }
