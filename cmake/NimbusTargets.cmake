@@ -10,6 +10,13 @@ target_compile_options(nimbus_options INTERFACE
 target_compile_definitions(nimbus_options INTERFACE
   GLM_ENABLE_EXPERIMENTAL
   $<$<CONFIG:Debug>:NIMBUS_DEBUG=1>)
+# Coverage for libFuzzer in every library the fuzz targets link (tests/fuzz); needs clang.
+if(NIMBUS_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "NIMBUS_FUZZ needs clang (the asan preset uses clang++-14)")
+  endif()
+  target_compile_options(nimbus_options INTERFACE -fsanitize=fuzzer-no-link)
+endif()
 if(NIMBUS_SANITIZE)
   target_compile_options(nimbus_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
   target_link_options(nimbus_options INTERFACE -fsanitize=address,undefined)

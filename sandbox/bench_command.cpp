@@ -16,6 +16,7 @@
 
 #include "bench_report.h"
 #include "bench_sweep.h"
+#include "cli_options.h"
 #include "commands.h"
 #include "nimbus/base/error.h"
 #include "nimbus/base/progress.h"
@@ -36,11 +37,11 @@ struct BenchOptions {
     std::string scene;
     std::string out = "out/bench";
     std::string size = "640x360";
-    double time = 0.0;
-    int frames = 20;
+    std::string time = "0";
+    std::string frames = "20";
     bool scaling = false;
     std::vector<std::string> only;
-    double tolerance = 1e-4;
+    std::string tolerance = "0.0001";
 };
 
 std::string isoDate() {
@@ -67,7 +68,8 @@ media::ParticleSet syntheticCloud(std::size_t count, const assets::Aabb& bounds,
     media::ParticleSet set;
     set.reserve(count);
     while (set.size() < count) {
-        const glm::dvec3 p(uniform(), uniform(), uniform());
+        const double z = uniform(), y = uniform(), x = uniform();  // in sequence: the same cloud from every compiler
+        const glm::dvec3 p(x, y, z);
         if (glm::dot(p, p) > 1.0) continue;
         set.push(centre + p * half, static_cast<float>(radius), sigma, medium);
     }
@@ -140,9 +142,10 @@ nlohmann::json runScaling(Session& session, const media::ParticleSet& sceneParti
 int run(const BenchOptions& o) {
     int width = 0, height = 0;
     parseSize(o.size, width, height);
-    if (o.frames < 20) throwInputError("--frames", std::to_string(o.frames), "", "at least 20 frames are timed");
+    const int frames = parseCount(o.frames, "--frames", 20, 10000);
+    const double tolerance = parsePositive(o.tolerance, "--tolerance", 0.1);
     std::unique_ptr<gpu::Context> context;  // outlives the session's GL objects
-    auto session = std::make_unique<Session>(SessionOptions{o.scene, o.time, {}});
+    auto session = std::make_unique<Session>(SessionOptions{o.scene, parseTime(o.time), {}});
     context = gpu::Context::create();
 
     BenchRun run;
@@ -166,13 +169,13 @@ int run(const BenchOptions& o) {
     media::reference::ReferenceSettings referenceSettings;
     referenceSettings.width = width;
     referenceSettings.height = height;
-    referenceSettings.tolerance = o.tolerance;
+    referenceSettings.tolerance = tolerance;
     const assets::RgbImage referenceImage = media::reference::renderReference(reference->inputs, referenceSettings);
     run.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
 
     {
         ProgressBar progress("bench " + std::to_string(configs.size()) + " settings", configs.size());
-        run.results = runSweep(*session, configs, width, height, referenceImage, {o.frames, 3},
+        run.results = runSweep(*session, configs, width, height, referenceImage, {frames, 3},
                                [&](std::size_t) { progress.advance(); });
     }
     if (o.scaling) run.scaling = runScaling(*session, reference->particles, 5);
@@ -195,11 +198,11 @@ CommandRunner addBenchCommand(CLI::App& app) {
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--out", options->out, "output folder")->capture_default_str();
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
-    cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));
-    cmd->add_option("--frames", options->frames, "timed frames per setting (at least 20)")->capture_default_str();
+    addTimeOption(cmd, options->time);
+    cmd->add_option("--frames", options->frames, "timed frames per setting, 20..10000")->capture_default_str();
     cmd->add_flag("--scaling", options->scaling, "also sweep particle count (1k..1M) and resolution");
     cmd->add_option("--only", options->only, "measure only these settings of the sweep (repeatable)");
-    cmd->add_option("--tolerance", options->tolerance, "reference quadrature tolerance")->capture_default_str();
+    cmd->add_option("--tolerance", options->tolerance, "reference quadrature tolerance, in (0, 0.1]")->capture_default_str();
     return [options] { return run(*options); };
 }
 

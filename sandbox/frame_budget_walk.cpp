@@ -1,12 +1,15 @@
 #include "frame_budget_walk.h"
 
 #include <chrono>
+#include <map>
 #include <set>
 
 #include <epoxy/gl.h>
 
 #include "nimbus/base/frame_budget.h"
+#include "nimbus/base/error.h"
 #include "nimbus/base/settings.h"
+#include "nimbus/scene/scene_plugin.h"
 #include "nimbus/media/ecs/media_plugin.h"
 
 namespace nimbus::sandbox {
@@ -20,6 +23,29 @@ void applyRung(Settings& settings, const media::ecs::QualityRung& rung, const st
         if (!userKeys.count(key)) settings.set(key, value, std::string("--budget-ms (") + rung.name + ")");
 }
 
+// A key the user set must act on at least one rung the walk may keep (media::idleSettings): one
+// that acts on none is refused before any frame is timed.
+void refuseIdleOnEveryRung(ecs::App& app, const std::set<std::string>& userKeys) {
+    const auto* asset = app.world().tryResource<scene::SceneAsset>();
+    const bool multiple = asset == nullptr || asset->scene == nullptr || asset->scene->environment.scattering == assets::Scattering::Multiple;
+    const auto& table = app.resource<media::ecs::MediaTechniques>().table;
+    std::map<std::string, std::string> idleEverywhere;  // key → why, on the first rung
+    bool first = true;
+    for (const auto& rung : media::ecs::kQualityLadder) {
+        Settings settings = app.resource<Settings>();
+        applyRung(settings, rung, userKeys);
+        std::map<std::string, std::string> idle;
+        for (const media::IdleSetting& i : media::idleSettings(settings, table, multiple))
+            if (!settings.isDefault(i.key) && (first || idleEverywhere.count(i.key))) idle[i.key] = i.why;
+        idleEverywhere = std::move(idle);
+        first = false;
+    }
+    if (!idleEverywhere.empty()) {
+        const auto& [key, why] = *idleEverywhere.begin();
+        throwInputError(app.resource<Settings>().origin(key), key, "", why + ", nor on any other rung --budget-ms may keep");
+    }
+}
+
 }  // namespace
 
 BudgetChoice settleOnBudget(ecs::App& app, double budgetMs, int maxFrames) {
@@ -28,6 +54,7 @@ BudgetChoice settleOnBudget(ecs::App& app, double budgetMs, int maxFrames) {
     for (const auto& rung : media::ecs::kQualityLadder)
         for (const auto& [key, value] : rung.assignments())
             if (settings.has(key) && settings.origin(key) != "sandbox's default") userKeys.insert(key);
+    refuseIdleOnEveryRung(app, userKeys);
     const int rungs = static_cast<int>(std::size(media::ecs::kQualityLadder));
     FrameBudget budget({.budgetMs = budgetMs, .rungs = rungs});
     BudgetChoice choice;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "cli_options.h"
 #include "commands.h"
 #include "nimbus/assets/image_io.h"
 #include "nimbus/base/error.h"
@@ -23,9 +24,9 @@ struct ReferenceOptions {
     std::string scene;
     std::string out;
     std::string size = "640x360";
-    double time = 0.0;
+    std::string time = "0";
     std::string camera;
-    double tolerance = 1e-4;
+    std::string tolerance = "0.0001";
     int threads = 0;
     int spp = 64;
     std::uint64_t seed = 1;
@@ -41,14 +42,13 @@ std::string standardErrorPath(const std::string& out) {
 int run(const ReferenceOptions& o) {
     int width = 0, height = 0;
     parseSize(o.size, width, height);
-    if (!std::isfinite(o.time) || o.time < 0.0) throwInputError("--time", std::to_string(o.time), "", "must be a finite time >= 0");
-    if (!(o.tolerance > 0.0) || o.tolerance > 0.1)
-        throwInputError("--tolerance", std::to_string(o.tolerance), "", "must be in (0, 0.1]");
+    const double time = parseTime(o.time);
+    const double tolerance = parsePositive(o.tolerance, "--tolerance", 0.1);
 
     const auto start = std::chrono::steady_clock::now();
     // The same Session the real-time renderer starts from: the same simulation steps, node poses
     // and particle set, so `compare` measures the renderers and nothing else.
-    SessionOptions options{o.scene, o.time, {}};
+    SessionOptions options{o.scene, time, {}};
     if (!o.scattering.empty()) options.scattering = parseScattering(o.scattering);
     Session session(options);
     const auto reference = makeReferenceScene(session, o.camera, width, height);
@@ -58,7 +58,7 @@ int run(const ReferenceOptions& o) {
     media::reference::ReferenceSettings settings;
     settings.width = width;
     settings.height = height;
-    settings.tolerance = o.tolerance;
+    settings.tolerance = tolerance;
     settings.threads = o.threads;
     settings.spp = o.spp;
     settings.seed = o.seed;
@@ -89,9 +89,9 @@ CommandRunner addReferenceCommand(CLI::App& app) {
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--out", options->out, "output image: .exr holds linear radiance")->required();
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
-    cmd->add_option("--time", options->time, "scene time in seconds (animation, emitters)")->capture_default_str();
+    addTimeOption(cmd, options->time, "scene time in seconds (animation, emitters)");
     cmd->add_option("--camera", options->camera, "camera: a camera or node name, or an index into the file's cameras; default: the scene's first");
-    cmd->add_option("--tolerance", options->tolerance, "relative change at which the quadrature stops")->capture_default_str();
+    cmd->add_option("--tolerance", options->tolerance, "relative change at which the quadrature stops, in (0, 0.1]")->capture_default_str();
     cmd->add_option("--threads", options->threads, "worker threads (0: all cores)")->capture_default_str()->check(CLI::Range(0, 1024));
     cmd->add_option("--spp", options->spp, "multiple scattering: paths per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 20));
     cmd->add_option("--seed", options->seed, "multiple scattering: the paths' random streams")->capture_default_str();

@@ -22,6 +22,7 @@
 #include "nimbus/media/ecs/media_plugin.h"
 #include "nimbus/gpu/pass_timer.h"
 #include "nimbus/render/render_plugin.h"
+#include "cli_options.h"
 #include "frame_budget_walk.h"
 #include "session.h"
 
@@ -34,26 +35,35 @@ struct RenderOptions {
     std::string size = "1280x720";
     std::string mode;
     std::string quality;
-    double time = 0.0;
+    std::string time = "0";
     std::string camera;
     std::vector<std::string> settings;
     std::string stats;
-    int frames = 20;
-    float exposure = 1.0f;
+    std::string frames = "20";
+    std::string exposure = "1";
     std::string tonemap = "none";
     bool floor = false;
     std::string budget;  // --budget-ms, as typed
     std::string scattering;  // empty: the scene's model
 };
 
-// --budget-ms: a finite positive number of milliseconds; 0 when not given.
-double parseBudget(const std::string& text) {
-    if (text.empty()) return 0.0;
-    double ms = 0.0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), ms);
-    if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(ms) || !(ms > 0.0))
-        throwInputError("--budget-ms", text, "", "expected a positive number of milliseconds per frame");
-    return ms;
+// What run() reads from the options' text, every value checked before any work starts.
+struct RenderValues {
+    int width = 0, height = 0;
+    double time = 0.0;
+    int frames = 20;
+    float exposure = 1.0f;
+    double budgetMs = 0.0;  // 0: no --budget-ms
+};
+
+RenderValues readValues(const RenderOptions& o) {
+    RenderValues v;
+    parseSize(o.size, v.width, v.height);
+    v.time = parseTime(o.time);
+    v.frames = parseCount(o.frames, "--frames", 20, 10000);
+    v.exposure = static_cast<float>(parsePositive(o.exposure, "--exposure", 1e30));
+    if (!o.budget.empty()) v.budgetMs = parsePositive(o.budget, "--budget-ms", 1e6, "milliseconds per frame");
+    return v;
 }
 
 assets::ToneCurve parseToneCurve(const std::string& text) {
@@ -127,29 +137,29 @@ void writeStats(const RenderOptions& o, Session& session, const gpu::Context& co
 }
 
 // The session for the options, with rendering on at width×height; bad input is refused before any GL work.
-std::unique_ptr<Session> openSession(const RenderOptions& o, int width, int height) {
-    SessionOptions options{o.scene, o.time, o.settings};
+std::unique_ptr<Session> openSession(const RenderOptions& o, const RenderValues& v) {
+    SessionOptions options{o.scene, v.time, o.settings};
     if (!o.scattering.empty()) options.scattering = parseScattering(o.scattering);
     if (!o.mode.empty()) options.options.emplace_back("mode=" + o.mode, "--mode");
     if (!o.quality.empty()) options.options.emplace_back("quality=" + o.quality, "--quality");
+    options.defaultQuality = kRenderDefaultQuality;
+    options.refuseIdle = v.budgetMs == 0.0;  // the walk checks each rung itself
     auto session = std::make_unique<Session>(options);
-    useDefaultQuality(session->app(), kRenderDefaultQuality);
     auto& request = session->app().resource<render::RenderRequest>();
     request.enabled = true;
-    request.settings.width = width;
-    request.settings.height = height;
+    request.settings.width = v.width;
+    request.settings.height = v.height;
     request.camera = o.camera;
     return session;
 }
 
 int run(const RenderOptions& o) {
-    int width = 0, height = 0;
-    parseSize(o.size, width, height);
-    if (o.frames < 20) throwInputError("--frames", std::to_string(o.frames), "", "at least 20 frames are timed");
-    const double budgetMs = parseBudget(o.budget);
+    const RenderValues v = readValues(o);
+    const int width = v.width, height = v.height;
+    const double budgetMs = v.budgetMs;
     const assets::ToneCurve curve = parseToneCurve(o.tonemap);
     std::unique_ptr<gpu::Context> context;  // declared first: it must outlive the GL objects the session makes
-    std::unique_ptr<Session> session = openSession(o, width, height);
+    std::unique_ptr<Session> session = openSession(o, v);
     context = gpu::Context::create();
     ecs::App& app = session->app();
 
@@ -162,16 +172,16 @@ int run(const RenderOptions& o) {
         stats["chosen"] = choice.rung;
     }
     renderFrame(app);
-    if (!o.stats.empty()) measureFrames(app, o.frames, stats);
+    if (!o.stats.empty()) measureFrames(app, v.frames, stats);
     auto& state = app.resource<render::RendererState>();
     const assets::RgbImage image = state.renderer->readOutput();
     if (o.floor) {  // right after the timed frames, in the same process: the scene's fixed yardstick
         const auto* media = app.world().tryResource<media::ecs::MediaRendererState>();
         const render::View view = render::makeView(state.lastInput.camera, width, height);
-        stats["splat_floor_ms"] = media && media->renderer ? media->renderer->measureSplatFloor(view, o.frames) : 0.0;
+        stats["splat_floor_ms"] = media && media->renderer ? media->renderer->measureSplatFloor(view, v.frames) : 0.0;
     }
     const gpu::GlErrorReport errors = context->takeGlErrors();
-    for (const auto& file : o.out) assets::writeImage(file, image, {o.exposure, curve});
+    for (const auto& file : o.out) assets::writeImage(file, image, {v.exposure, curve});
     stats["width"] = width;
     stats["height"] = height;
     if (!o.stats.empty()) writeStats(o, *session, *context, errors.count, stats);
@@ -185,7 +195,7 @@ int run(const RenderOptions& o) {
     std::printf("rendered %s at %dx%d (camera %s, t=%.3f s)%s\n", o.scene.c_str(), width, height,
                 state.lastInput.camera.name.c_str(), session->time(), outputs.c_str());
     if (stats.contains("frame_ms"))
-        std::printf("frame_ms %.3f (median of %d, %s)\n", stats["frame_ms"].get<double>(), o.frames, context->renderer().c_str());
+        std::printf("frame_ms %.3f (median of %d, %s)\n", stats["frame_ms"].get<double>(), v.frames, context->renderer().c_str());
     return 0;
 }
 
@@ -197,17 +207,17 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)")->required();
     cmd->add_option("--out", options->out, "output image: .exr (linear radiance) or .png (sRGB); repeatable");
     cmd->add_option("--size", options->size, "image size WxH")->capture_default_str();
-    cmd->add_option("--mode", options->mode, "media mode: " + modeNames());
-    cmd->add_option("--quality", options->quality, "fast, balanced (default) or exact");
+    cmd->add_option("--mode", options->mode, settingOptionHelp("mode", "how the medium is drawn", "the scene's, else particles"));
+    cmd->add_option("--quality", options->quality, settingOptionHelp("quality", "the quality tier", "the scene's, else balanced"));
     cmd->add_option("--scattering", options->scattering, "the optical model instead of the scene's: single or multiple");
     cmd->add_option("--budget-ms", options->budget,
                     "frame budget: walk the quality ladder and keep the lowest-error setting whose frames fit");
-    cmd->add_option("--time", options->time, "simulation time in seconds")->check(CLI::Range(0.0, 1e6));
+    addTimeOption(cmd, options->time);
     cmd->add_option("--camera", options->camera, "camera: a camera or node name, or an index into the file's cameras; default: the scene's first");
     cmd->add_option("--set", options->settings, "KEY=VALUE setting (repeatable; `sandbox settings` lists them)");
     cmd->add_option("--stats", options->stats, "write frame timings and renderer info as JSON");
-    cmd->add_option("--frames", options->frames, "timed frames for --stats (at least 20)")->capture_default_str();
-    cmd->add_option("--exposure", options->exposure, "PNG exposure multiplier")->capture_default_str()->check(CLI::PositiveNumber);
+    cmd->add_option("--frames", options->frames, "timed frames for --stats, 20..10000")->capture_default_str();
+    cmd->add_option("--exposure", options->exposure, "PNG exposure multiplier, a finite number > 0")->capture_default_str();
     cmd->add_option("--tonemap", options->tonemap, "PNG tone curve after the exposure: none (clip at 1) or filmic (ACES fit); EXR stays linear")
         ->capture_default_str();
     cmd->add_flag("--floor", options->floor, "with --stats: also measure splat_floor_ms, every particle's billboard blended once")

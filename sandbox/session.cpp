@@ -1,8 +1,10 @@
 #include "session.h"
 
 #include <charconv>
+#include <cstdio>
 
 #include "nimbus/base/error.h"
+#include "nimbus/base/progress.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/assets/scene_queries.h"
 #include "nimbus/media/ecs/media_plugin.h"
@@ -16,6 +18,33 @@ Session::Session(const SessionOptions& options)
     : Session(std::make_shared<const assets::Scene>(assets::loadScene(options.scene)), options) {}
 
 namespace {
+
+// Simulations longer than this many steps (a minute of scene time at 1/60 s) say so on stderr
+// and draw a progress bar on a terminal: at about a millisecond a step, they take a while.
+constexpr std::uint64_t kAnnouncedSteps = 3600;
+
+void simulateAnnounced(ecs::App& app, double time) {
+    const std::uint64_t steps = scene::simulationSteps(time, app.timeStep());
+    if (steps <= kAnnouncedSteps) return scene::simulateTo(app, time);
+    std::fprintf(stderr, "simulating %llu steps of %s s to t = %s s\n", static_cast<unsigned long long>(steps),
+                 formatSettingNumber(app.timeStep()).c_str(), formatSettingNumber(time).c_str());
+    ProgressBar bar("simulating", steps);
+    std::uint64_t shown = 0;
+    scene::simulateTo(app, time, [&](std::uint64_t done, std::uint64_t) {
+        bar.advance(done - shown);
+        shown = done;
+    });
+}
+
+// An option (--mode, --quality) and a --set of the same key must agree: which would win is not
+// for the user to guess.
+void assignOption(Settings& settings, const std::string& assignment, const std::string& origin) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    const std::string value = assignment.substr(key.size() + 1);
+    if (const auto given = settings.text(key); given && *given != value)
+        throwInputError(origin, value, "", "conflicts with " + settings.origin(key) + " " + key + "=" + *given + ": give one");
+    settings.assign(assignment, origin);
+}
 
 // The scene as the options have it: another optical model makes a copy that differs in it alone.
 std::shared_ptr<const assets::Scene> withModel(std::shared_ptr<const assets::Scene> scene, const SessionOptions& options) {
@@ -39,11 +68,16 @@ Session::Session(std::shared_ptr<const assets::Scene> scene, const SessionOption
     app_->addPlugin<render::RenderPlugin>();
     app_->addPlugin<media::ecs::MediaPlugin>(options.techniques ? *options.techniques : media::builtInTechniques());
     for (const auto& assignment : options.settings) app_->resource<Settings>().assign(assignment);
-    for (const auto& [assignment, origin] : options.options) app_->resource<Settings>().assign(assignment, origin);
+    for (const auto& [assignment, origin] : options.options) assignOption(app_->resource<Settings>(), assignment, origin);
     // Checked now, so a bad value is refused even for a scene the media plugin has nothing to draw in.
     (void)media::ecs::readMediaSettings(app_->world());
+    (void)scene::simulationSteps(options.time, app_->timeStep());  // refused before the scene is spawned
     scene::spawnScene(app_->world(), scene_);
-    scene::simulateTo(*app_, options.time);
+    // After the scene's render block, which wins over the sandbox's default tier.
+    if (!options.defaultQuality.empty() && !app_->resource<Settings>().has("quality"))
+        app_->resource<Settings>().set("quality", options.defaultQuality, "sandbox's default");
+    if (options.refuseIdle) media::ecs::refuseIdleSettings(app_->world());
+    simulateAnnounced(*app_, options.time);
 }
 
 void Session::adoptRenderers(Session& previous) {
@@ -95,11 +129,6 @@ std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::
     return out;
 }
 
-void useDefaultQuality(ecs::App& app, const std::string& quality) {
-    auto& settings = app.resource<Settings>();
-    if (!settings.has("quality")) settings.set("quality", quality, "sandbox's default");
-}
-
 void parseSize(const std::string& text, int& width, int& height, const std::string& option) {
     const auto x = text.find('x');
     auto parse = [&](std::string_view part, int& out) {
@@ -108,13 +137,7 @@ void parseSize(const std::string& text, int& width, int& height, const std::stri
     };
     if (x == std::string::npos || !parse(std::string_view(text).substr(0, x), width) ||
         !parse(std::string_view(text).substr(x + 1), height))
-        throwInputError(option, text, "", "expected WxH with each side in 1..16384, e.g. 1280x720");
-}
-
-std::string modeNames() {
-    std::string out;
-    for (const std::string& name : media::builtInTechniques().names()) out += (out.empty() ? "" : ", ") + name;
-    return out;
+        throwInputError(option, typedText(text), "", "expected WxH with each side in 1..16384, e.g. 1280x720");
 }
 
 }  // namespace nimbus::sandbox

@@ -23,6 +23,10 @@ struct SessionOptions {
     std::vector<std::pair<std::string, std::string>> options;  // (KEY=VALUE, origin) from options such as --mode
     std::optional<media::TechniqueTable> techniques;  // the media modes offered; empty: the built-in ones
     std::optional<assets::Scattering> scattering;      // the optical model instead of the scene's (--scattering)
+    std::string defaultQuality;  // the tier unless the command line or the scene chose one; empty: exact
+    // A key set where it has no effect is refused (media::ecs::refuseIdleSettings); false for a
+    // caller that changes the tier itself and checks (the --budget-ms walk).
+    bool refuseIdle = true;
 };
 
 // "single" or "multiple" (--scattering); InputError naming `option` otherwise.
@@ -31,7 +35,8 @@ assets::Scattering parseScattering(const std::string& text, const std::string& o
 class Session {
 public:
     // Loads and validates the whole scene (throws InputError before anything is spawned), builds
-    // the plugins, spawns the scene and simulates it to options.time.
+    // the plugins, spawns the scene, refuses settings that would have no effect, and simulates it
+    // to options.time (announced on stderr, with progress on a terminal, when it is long).
     explicit Session(const SessionOptions& options);
     // The same for a scene already loaded (the editor loads each edit from memory); options.scene
     // is not read.
@@ -72,11 +77,7 @@ std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::
 // What `sandbox render`, the demo and the editor render at unless told otherwise: the quality tier
 // a game would pick. Libraries and tests default to `exact`.
 inline constexpr char kRenderDefaultQuality[] = "balanced";
-// Sets `quality` to `quality` unless the command line or the scene chose one.
-void useDefaultQuality(ecs::App& app, const std::string& quality);
 
-// The media modes of the built-in technique table, for help texts: "particles, blocks, ...".
-std::string modeNames();
 
 // Parses "WxH" (1..16384 each); throws InputError naming the option otherwise.
 void parseSize(const std::string& text, int& width, int& height, const std::string& option = "--size");

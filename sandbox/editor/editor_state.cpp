@@ -1,7 +1,10 @@
 #include "editor_state.h"
 
+#include <cmath>
+
 #include "nimbus/base/error.h"
 #include "nimbus/base/log.h"
+#include "nimbus/base/settings.h"
 #include "nimbus/scene/scene_plugin.h"
 
 namespace nimbus::sandbox::editor {
@@ -17,9 +20,8 @@ std::unique_ptr<Session> EditorState::buildSession(const Document& document, dou
     options.settings = view.settings;
     if (!view.mode.empty()) options.options.emplace_back("mode=" + view.mode, "the editor's mode");
     if (!view.quality.empty()) options.options.emplace_back("quality=" + view.quality, "the editor's quality");
-    auto session = std::make_unique<Session>(std::make_shared<const assets::Scene>(document.load()), options);
-    useDefaultQuality(session->app(), kRenderDefaultQuality);
-    return session;
+    options.defaultQuality = kRenderDefaultQuality;
+    return std::make_unique<Session>(std::make_shared<const assets::Scene>(document.load()), options);
 }
 
 void EditorState::replaceSession(std::unique_ptr<Session> next) {
@@ -178,26 +180,30 @@ bool EditorState::redo() {
 // ---- time and view settings -------------------------------------------------------------------
 
 void EditorState::scrub(double seconds) {
-    if (!(seconds >= 0.0) || seconds > 1e6) throwInputError("time", std::to_string(seconds), "", "must be in 0..1e6 s");
+    (void)scene::simulationSteps(seconds, session_->app().timeStep());  // refused before the session is rebuilt
     replaceSession(buildSession(document_, seconds, view_));
     time_ = seconds;
 }
 
 void EditorState::advance(double seconds) {
+    if (!std::isfinite(seconds) || seconds < 0.0)
+        throwInputError("play", formatSettingNumber(seconds), "", "must be a finite number of seconds >= 0");
+    scene::simulateTo(session_->app(), time_ + seconds);  // refuses a time beyond the step limit, unchanged
     time_ += seconds;
-    scene::simulateTo(session_->app(), time_);
     ++revision_;
 }
 
 void EditorState::setQuality(const std::string& quality) {
     ViewSettings next = view_;
     next.quality = quality;
+    std::erase_if(next.settings, [](const std::string& s) { return s.rfind("quality=", 0) == 0; });  // the latest choice wins
     setView(next);
 }
 
 void EditorState::setMode(const std::string& mode) {
     ViewSettings next = view_;
     next.mode = mode;
+    std::erase_if(next.settings, [](const std::string& s) { return s.rfind("mode=", 0) == 0; });
     setView(next);
 }
 

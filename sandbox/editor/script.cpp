@@ -138,6 +138,13 @@ const std::map<std::string, Handler>& handlers() {
 std::vector<ScriptLine> readScript(const std::filesystem::path& file) {
     std::ifstream in(file);
     if (!in) throwInputError(file.string(), "", "", "cannot read the script");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseScript(text.str());
+}
+
+std::vector<ScriptLine> parseScript(const std::string& script) {
+    std::istringstream in(script);
     std::vector<ScriptLine> lines;
     std::string text;
     for (int number = 1; std::getline(in, text); ++number) {
@@ -148,9 +155,15 @@ std::vector<ScriptLine> readScript(const std::filesystem::path& file) {
 }
 
 void runScriptLine(ScriptTarget& target, const std::filesystem::path& script, const ScriptLine& line) {
+    const std::string where = script.string() + ":" + std::to_string(line.number);
+    // Names and paths go into the glTF JSON, which is UTF-8 text.
+    try {
+        (void)Json(line.text).dump();
+    } catch (const Json::type_error&) {
+        throwInputError(where, "", "", "the line is not UTF-8 text");
+    }
     const Command command = split(line.text);
     const auto it = handlers().find(command.name);
-    const std::string where = script.string() + ":" + std::to_string(line.number);
     if (it == handlers().end()) throwInputError(where, command.name, "", "unknown command");
     try {
         it->second(target, command);

@@ -39,6 +39,8 @@ struct ScriptLine {
 
 // Reads the file (InputError when it cannot) into its command lines.
 std::vector<ScriptLine> readScript(const std::filesystem::path& file);
+// The same for a script's text.
+std::vector<ScriptLine> parseScript(const std::string& text);
 
 // Runs one command. Throws InputError naming the script line for anything wrong.
 void runScriptLine(ScriptTarget& target, const std::filesystem::path& script, const ScriptLine& line);

@@ -55,7 +55,8 @@ CloudScene makeCloudScene(std::size_t count) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     const glm::dvec3 centre(0.0, 7.0, 0.0), radii(12.0, 4.5, 8.0);
     while (c.particles.size() < count) {
-        const glm::dvec3 q(u(rng), u(rng), u(rng));
+        const double z = u(rng), y = u(rng), x = u(rng);  // in sequence: the same cloud from every compiler
+        const glm::dvec3 q(x, y, z);
         const double r2 = glm::dot(q, q);
         if (r2 > 1.0) continue;
         const float radius = static_cast<float>(1.4 + 0.6 * u(rng));

@@ -7,11 +7,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
+
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 extern char** environ;
 
@@ -45,7 +49,8 @@ std::vector<std::string> ProcessResult::errLines() const {
     return lines;
 }
 
-ProcessResult runProcess(const std::filesystem::path& program, const std::vector<std::string>& args) {
+ProcessResult runProcess(const std::filesystem::path& program, const std::vector<std::string>& args, double limitSeconds) {
+    const auto start = std::chrono::steady_clock::now();
     const std::filesystem::path outFile = uniqueTempPath("nimbus_stdout"), errFile = uniqueTempPath("nimbus_stderr");
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -65,11 +70,21 @@ ProcessResult runProcess(const std::filesystem::path& program, const std::vector
     posix_spawn_file_actions_destroy(&actions);
     if (spawned != 0) throw std::runtime_error("cannot start " + program.string() + ": " + std::strerror(spawned));
 
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) throw std::runtime_error("waitpid failed for " + program.string());
-    }
     ProcessResult result;
+    int status = 0;
+    for (;;) {
+        const pid_t done = waitpid(pid, &status, limitSeconds > 0.0 ? WNOHANG : 0);
+        if (done == pid) break;
+        if (done < 0 && errno != EINTR) throw std::runtime_error("waitpid failed for " + program.string());
+        if (done == 0) {
+            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limitSeconds && !result.timedOut) {
+                ::kill(pid, SIGKILL);
+                result.timedOut = true;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (WIFSIGNALED(status)) {
         result.signaled = true;
         result.signal = WTERMSIG(status);

@@ -14,6 +14,8 @@ struct ProcessResult {
     int signal = 0;      // the signal that killed it, when signaled
     std::string out;
     std::string err;
+    bool timedOut = false;  // killed after the time limit runProcess was given
+    double seconds = 0.0;   // wall time from start to exit
 
     // "exit 2" or "killed by signal 11 (Segmentation fault)", for failure messages.
     std::string describe() const;
@@ -21,9 +23,10 @@ struct ProcessResult {
     std::vector<std::string> errLines() const;
 };
 
-// Runs `program` with `args` (argv[1..]) and waits for it. Throws std::runtime_error when it
-// cannot be started at all.
-ProcessResult runProcess(const std::filesystem::path& program, const std::vector<std::string>& args);
+// Runs `program` with `args` (argv[1..]) and waits for it, at most `limitSeconds` when that is
+// > 0 (then it is killed, signaled and timedOut). Throws std::runtime_error when it cannot be
+// started at all.
+ProcessResult runProcess(const std::filesystem::path& program, const std::vector<std::string>& args, double limitSeconds = 0.0);
 
 // The sandbox executable these tests were built beside (NIMBUS_SANDBOX_EXE).
 std::filesystem::path sandboxExecutable();

@@ -139,8 +139,6 @@ void checkAccessors(const GltfCheckInput& in) {
     });
 }
 
-constexpr std::int64_t kMaxImageSide = 16384;
-
 void checkImages(const GltfCheckInput& in) {
     const Json& views = topLevelArray(*in.root, "bufferViews");
     forEachObject(in, "images", "image", [&](std::size_t, const Json& img, const JsonPlace& place) {

@@ -17,6 +17,12 @@ std::string describeInputProblem(std::string_view file, std::string_view object,
     return out;
 }
 
+std::string typedText(std::string_view text) {
+    constexpr std::size_t kShown = 24;
+    if (text.size() <= kShown) return std::string(text);
+    return std::string(text.substr(0, kShown)) + "... (" + std::to_string(text.size()) + " characters)";
+}
+
 void throwInputError(std::string_view file, std::string_view object, std::string_view field,
                      std::string_view problem) {
     throw InputError(describeInputProblem(file, object, field, problem));

@@ -47,24 +47,25 @@ SettingValue parseValue(const SettingSpec& spec, const std::string& v, const std
         case SettingType::Boolean:
             if (v == "on" || v == "true") out.boolean = true;
             else if (v == "off" || v == "false") out.boolean = false;
-            else refuse(where, spec, "'" + v + "' is not on or off");
+            else refuse(where, spec, "'" + typedText(v) + "' is not on or off");
             return out;
         case SettingType::Choice:
-            refuse(where, spec, "'" + v + "' is not one of its values");
+            refuse(where, spec, "'" + typedText(v) + "' is not one of its values");
         case SettingType::Integer: {
             const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out.integer);
-            if (ec == std::errc::result_out_of_range) refuse(where, spec, v + " is outside its range");
-            if (ec != std::errc() || end != v.data() + v.size()) refuse(where, spec, "'" + v + "' is not a whole number");
+            if (ec == std::errc::result_out_of_range && end == v.data() + v.size())
+                refuse(where, spec, typedText(v) + " is outside its range");
+            if (ec != std::errc() || end != v.data() + v.size()) refuse(where, spec, "'" + typedText(v) + "' is not a whole number");
             if (static_cast<double>(out.integer) < spec.min || static_cast<double>(out.integer) > spec.max)
-                refuse(where, spec, v + " is outside its range");
+                refuse(where, spec, typedText(v) + " is outside its range");
             out.number = static_cast<double>(out.integer);
             return out;
         }
         case SettingType::Number: {
             const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out.number);
             if (ec != std::errc() || end != v.data() + v.size() || !std::isfinite(out.number))
-                refuse(where, spec, "'" + v + "' is not a finite number");
-            if (out.number < spec.min || out.number > spec.max) refuse(where, spec, v + " is outside its range");
+                refuse(where, spec, "'" + typedText(v) + "' is not a finite number");
+            if (out.number < spec.min || out.number > spec.max) refuse(where, spec, typedText(v) + " is outside its range");
             return out;
         }
     }
@@ -106,6 +107,8 @@ std::string describeSetting(const SettingSpec& spec) {
             if (spec.tiers & (1u << t)) tiers.emplace_back(kQualityTierNames[t]);
         out += std::string(spec.modes.empty() ? "; in" : ",") + " tier " + joinWords(tiers, " and ");
     }
+    if (!spec.actsWhen.empty()) out += "; acts only " + spec.actsWhen;
+    if (!spec.showsWith.empty()) out += "; shows only with " + spec.showsWith;
     return out;
 }
 
@@ -137,11 +140,13 @@ void Settings::set(const std::string& key, const std::string& value, const std::
     }
     values_[key] = value;
     origins_[key] = origin;
+    defaults_.erase(key);
 }
 
 void Settings::setDefault(const std::string& key, const std::string& value, const std::string& origin) {
     if (declared(key) && has(key)) return;  // the command line (or an earlier source) wins
     set(key, value, origin);              // throws for an undeclared key
+    defaults_.insert(key);
 }
 
 std::string Settings::origin(const std::string& key) const {
@@ -173,7 +178,7 @@ SettingSpec qualityTierSpec() {
                     "(docs/PERFORMANCE.md); a setting given explicitly wins over its tier",
             .type = SettingType::Choice,
             .words = {kQualityTierNames.begin(), kQualityTierNames.end()},
-            .defaultValue = "exact (sandbox render and the editor: balanced)"};
+            .defaultValue = "exact (sandbox render: balanced, sandbox edit: fast)"};
 }
 
 QualityTier readQualityTier(const Settings& settings) {

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
+#include "nimbus/base/error.h"
+#include "nimbus/base/settings.h"
 #include "nimbus/ecs/frame_info.h"
 
 namespace nimbus::scene {
@@ -83,9 +86,26 @@ std::vector<glm::dmat4> currentWorldTransforms(ecs::World& world) {
 
 double simulationTime(const ecs::App& app) { return static_cast<double>(app.frame()) * app.timeStep(); }
 
-void simulateTo(ecs::App& app, double time) {
-    const auto steps = static_cast<std::uint64_t>(std::llround(std::max(time, 0.0) / app.timeStep()));
-    while (app.frame() < steps) app.update(ecs::phases::kSimulate);
+std::uint64_t simulationSteps(double time, double timeStep, const std::string& origin) {
+    if (!std::isfinite(time) || time < 0.0)
+        throwInputError(origin, formatSettingNumber(time), "", "must be a finite number of seconds >= 0");
+    const double steps = std::round(time / timeStep);
+    if (!(steps <= static_cast<double>(kMaxSimulationSteps))) {
+        char limit[64];
+        std::snprintf(limit, sizeof limit, "%.0f s", static_cast<double>(kMaxSimulationSteps) * timeStep);
+        throwInputError(origin, formatSettingNumber(time), "",
+                        "needs more than " + formatSettingNumber(static_cast<double>(kMaxSimulationSteps)) + " simulation steps of " +
+                            formatSettingNumber(timeStep) + " s: at most " + limit + " is simulated");
+    }
+    return static_cast<std::uint64_t>(steps);
+}
+
+void simulateTo(ecs::App& app, double time, const SimulationProgress& progress) {
+    const std::uint64_t steps = simulationSteps(time, app.timeStep());
+    while (app.frame() < steps) {
+        app.update(ecs::phases::kSimulate);
+        if (progress && (app.frame() % 256 == 0 || app.frame() == steps)) progress(app.frame(), steps);
+    }
 }
 
 }  // namespace nimbus::scene

@@ -128,5 +128,48 @@ TEST(Settings, TheDescriptionSaysWhereAKeyActs) {
     EXPECT_FALSE(settingActsIn(spec, "blocks", kTierExact));
 }
 
+// A field whose effect another key turns off declares it (SettingField::acts): its spec's tiers
+// follow from the tiers' own values, and idleKeys names it where it does not act.
+struct Lit {
+    bool perFragment = true;
+    bool soft = true;
+    static Lit forTier(QualityTier tier) { return {.perFragment = tier == QualityTier::Exact}; }
+};
+const SettingField<Lit> kLitFields[] = {
+    {{.key = "per_fragment", .help = "per fragment", .type = SettingType::Boolean}, &setBoolean<&Lit::perFragment>},
+    {{.key = "soft", .help = "soft", .type = SettingType::Boolean, .actsWhen = "with per_fragment=on"}, &setBoolean<&Lit::soft>,
+     [](const Lit& l) { return l.perFragment; }},
+};
+
+TEST(SettingField, ActsDerivesTheTiersAndNamesIdleKeys) {
+    const std::vector<SettingSpec> specs = specsOf(kLitFields);
+    EXPECT_EQ(specs[0].tiers, 0u);
+    EXPECT_EQ(specs[1].tiers, kTierExact);
+    EXPECT_NE(describeSetting(specs[1]).find("tier exact; acts only with per_fragment=on"), std::string::npos) << describeSetting(specs[1]);
+    EXPECT_TRUE(idleKeys(kLitFields, Lit::forTier(QualityTier::Exact)).empty());
+    EXPECT_EQ(idleKeys(kLitFields, Lit::forTier(QualityTier::Fast)), std::vector<std::string>{"soft"});
+}
+
+TEST(Settings, DefaultsAreToldApartFromTheUsersValues) {
+    Settings s = toySettings();
+    s.set("slices", "8", "--set");
+    s.setDefault("scale", "0.5", "scene.gltf: render.scale");
+    s.setDefault("slices", "16", "scene.gltf: render.slices");  // the command line wins
+    EXPECT_FALSE(s.isDefault("slices"));
+    EXPECT_TRUE(s.isDefault("scale"));
+    s.set("scale", "0.25", "--set");
+    EXPECT_FALSE(s.isDefault("scale"));
+}
+
+// A typed value is repeated back at a readable length, never 300 digits.
+TEST(Settings, LongValuesAreCutInMessages) {
+    Settings s = toySettings();
+    s.set("slices", std::string(300, '9'));
+    const std::string message = refusal(s, "slices");
+    EXPECT_NE(message.find("outside its range"), std::string::npos) << message;
+    EXPECT_NE(message.find("300 characters"), std::string::npos) << message;
+    EXPECT_LT(message.size(), 160u) << message;
+}
+
 }  // namespace
 }  // namespace nimbus

@@ -22,7 +22,8 @@ inline ParticleSet blobCloud(std::size_t n, unsigned seed, const glm::dvec3& cen
     Medium medium;
     medium.albedo = glm::vec3(0.9f);
     while (set.size() < n) {
-        const glm::dvec3 p(u(rng), u(rng), u(rng));
+        const double z = u(rng), y = u(rng), x = u(rng);  // in sequence: the same cloud from every compiler
+        const glm::dvec3 p(x, y, z);
         if (glm::dot(p, p) > 1.0) continue;
         const float r = rMin + static_cast<float>(0.5 * (u(rng) + 1.0)) * (rMax - rMin);
         const float s = sigma * static_cast<float>(1.0 + 0.5 * u(rng));

@@ -64,7 +64,8 @@ inline void addRandomCloud(ParticleSet& set, std::size_t n, unsigned seed, const
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     for (std::size_t i = 0; i < n; ++i) {
-        const glm::dvec3 p = lo + (hi - lo) * glm::dvec3(u(rng), u(rng), u(rng));
+        const double z = u(rng), y = u(rng), x = u(rng);  // in sequence: the same cloud from every compiler
+        const glm::dvec3 p = lo + (hi - lo) * glm::dvec3(x, y, z);
         set.push(p, rMin + static_cast<float>(u(rng)) * (rMax - rMin), sigma * static_cast<float>(0.5 + u(rng)), m);
     }
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -231,8 +232,22 @@ TEST_F(ScenePluginTest, SimulateToNeverGoesBackwards) {
     simulateTo(app, 0.5);
     const std::uint64_t frame = app.frame();
     simulateTo(app, 0.2);
-    simulateTo(app, -1.0);
     EXPECT_EQ(app.frame(), frame);
+}
+
+// A time that is not finite, negative, or beyond kMaxSimulationSteps is refused before any step.
+TEST_F(ScenePluginTest, SimulateToRefusesTimesItCannotReach) {
+    spawnScene(app.world(), scene);
+    for (const double t : {-1.0, std::nan(""), HUGE_VAL, 1e9, 1e300}) {
+        EXPECT_THROW(simulateTo(app, t), InputError) << t;
+        EXPECT_EQ(app.frame(), 0u) << t;
+    }
+    EXPECT_EQ(simulationSteps(kMaxSimulationSteps / 60.0, 1.0 / 60.0), kMaxSimulationSteps);
+    try {
+        simulateTo(app, 1e300);
+    } catch (const InputError& e) {
+        EXPECT_LT(std::string(e.what()).size(), 200u) << "a huge time is printed as 1e+300, not 300 digits: " << e.what();
+    }
 }
 
 TEST(SimulateTo, UsesTheAppsTimeStep) {

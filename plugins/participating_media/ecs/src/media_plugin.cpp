@@ -76,6 +76,7 @@ void spawnMediaEntities(World& world, const assets::Scene& scene, const MediaSce
     });
     for (const MediaNode& node : media.nodes) {
         const Entity e = byNode.at(static_cast<std::size_t>(node.node));
+        if (e == nimbus::ecs::kNullEntity) continue;  // outside the displayed scene: not drawn, as its mesh is not
         world.emplace<MediumComponent>(e, MediumComponent{node.medium});
         if (!node.localPositions.empty() && !hasUniformScale(world.get<scene::Transform>(e).world))
             log::warn(scene.displayName() + ": node \"" + node.name + "\": non-uniform scale on a particle cloud; radii use the mean scale");
@@ -148,6 +149,17 @@ MediaRenderSettings readMediaSettings(World& world) {
     const auto* settings = world.tryResource<Settings>();
     if (settings == nullptr) return mediaSettingsForTier(QualityTier::Exact, table);
     return media::readMediaSettings(*settings, table);
+}
+
+void refuseIdleSettings(World& world) {
+    const auto* settings = world.tryResource<Settings>();
+    if (settings == nullptr) return;
+    const auto* asset = world.tryResource<scene::SceneAsset>();
+    const bool multiple = asset == nullptr || asset->scene == nullptr || asset->scene->environment.scattering == assets::Scattering::Multiple;
+    for (const IdleSetting& idle : idleSettings(*settings, world.resource<MediaTechniques>().table, multiple)) {
+        if (settings->isDefault(idle.key)) log::warn(describeInputProblem(settings->origin(idle.key), "", "", idle.why + "; ignored"));
+        else throwInputError(settings->origin(idle.key), idle.key, "", idle.why);
+    }
 }
 
 void gatherParticles(World& world, ParticleSet& out) {

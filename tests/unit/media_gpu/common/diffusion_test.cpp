@@ -112,6 +112,12 @@ TEST(EnvironmentGrid, KeepsTheAnswerOnlyForTheSameFrame) {
     EXPECT_GT(grid.sweeps, 0);
     solveEnvironmentGrid(p, {}, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {}, fresh);
     EXPECT_EQ(grid.texels, fresh.texels);
+    // Another sweep budget (scattering_sweeps) is another answer, never the last frame's.
+    EnvironmentGrid oneSweep;
+    solveEnvironmentGrid(p, {}, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {.maxSweeps = 1}, grid);
+    solveEnvironmentGrid(p, {}, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {.maxSweeps = 1}, oneSweep);
+    EXPECT_GT(grid.sweeps, 0);
+    EXPECT_EQ(grid.texels, oneSweep.texels);
 }
 
 }  // namespace

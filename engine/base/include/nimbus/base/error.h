@@ -23,6 +23,10 @@ public:
 std::string describeInputProblem(std::string_view file, std::string_view object, std::string_view field,
                                  std::string_view problem);
 
+// What a user typed, for a message: as typed, or its start and its length when it is long (a
+// 300-digit number is not repeated back).
+std::string typedText(std::string_view text);
+
 [[noreturn]] void throwInputError(std::string_view file, std::string_view object, std::string_view field,
                                   std::string_view problem);
 

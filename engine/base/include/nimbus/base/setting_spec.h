@@ -35,7 +35,15 @@ struct SettingSpec {
     std::vector<std::string> words;   // Choice: its values; Integer, Number: words also accepted ("auto")
     std::string defaultValue;         // what it is when nobody sets it, as a user reads it
     std::vector<std::string> modes;   // the media modes it acts in; empty: every mode
-    unsigned tiers = 0;               // the tiers it acts in (kTier* bits); 0: every tier
+    // The tiers it acts in with their own values of the other keys (kTier* bits); 0: every tier.
+    // specsOf() derives it from SettingField::acts where a field has one.
+    unsigned tiers = 0;
+    // Where it acts only while other keys allow: that condition as a user reads it, e.g.
+    // "with lighting=fragment". Empty: wherever `modes` says.
+    std::string actsWhen;
+    // What a scene must hold for its effect to show at all, e.g. "a point or spot light inside
+    // the medium"; empty: any scene with a medium (and meshes, for the mesh keys).
+    std::string showsWith;
 };
 
 // A value read against its spec: `word` is set (with its index) when the value is one of the
@@ -57,11 +65,17 @@ std::string acceptedValues(const SettingSpec& spec);
 // Whether the spec acts in `mode` (a mode name) and `tierBit`.
 bool settingActsIn(const SettingSpec& spec, const std::string& mode, unsigned tierBit);
 
+enum class QualityTier : unsigned char;  // quality_tier.h
+
 // A spec bound to a field of the typed struct S: `apply` writes the read value into it.
 template <class S>
 struct SettingField {
     SettingSpec spec;
     void (*apply)(S&, const SettingValue&) = nullptr;
+    // Whether it acts with S as read (the tier's values with every key set applied), for a key that
+    // another key turns off; null: it acts wherever spec.modes says. A key set where it does not
+    // act is refused (idleKeys), never silently ignored.
+    bool (*acts)(const S&) = nullptr;
 };
 
 // Appliers for the common shapes, e.g. &setInteger<&BlocksSettings::blocks>.
@@ -78,11 +92,31 @@ void setChoice(S& s, const SettingValue& v) {
     s.*Member = static_cast<Enum>(v.wordIndex);
 }
 
-// The specs alone, for declaring them.
+// The specs alone, for declaring them. Where a field has `acts` and S has a
+// `static S forTier(QualityTier)`, its spec's tiers are those whose own values it acts with.
 template <class S, std::size_t N>
 std::vector<SettingSpec> specsOf(const SettingField<S> (&fields)[N]) {
     std::vector<SettingSpec> out;
-    for (const SettingField<S>& f : fields) out.push_back(f.spec);
+    for (const SettingField<S>& f : fields) {
+        SettingSpec spec = f.spec;
+        if constexpr (requires(QualityTier t) { S::forTier(t); }) {
+            if (f.acts != nullptr) {
+                spec.tiers = 0;
+                for (unsigned t = 0; t < 3; ++t)
+                    if (f.acts(S::forTier(static_cast<QualityTier>(t)))) spec.tiers |= 1u << t;
+            }
+        }
+        out.push_back(spec);
+    }
+    return out;
+}
+
+// The keys of `fields` whose `acts` says they do not act with `resolved` (whether or not set).
+template <class S, std::size_t N>
+std::vector<std::string> idleKeys(const SettingField<S> (&fields)[N], const S& resolved) {
+    std::vector<std::string> out;
+    for (const SettingField<S>& f : fields)
+        if (f.acts != nullptr && !f.acts(resolved)) out.push_back(f.spec.key);
     return out;
 }
 

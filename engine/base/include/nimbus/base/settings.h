@@ -7,6 +7,7 @@
 // applies the keys set here on top (readFields).
 #include <map>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,9 +35,12 @@ public:
     void setDefault(const std::string& key, const std::string& value, const std::string& origin);
 
     bool has(const std::string& key) const { return values_.count(key) != 0; }
+    // Whether the value came from setDefault (a scene's defaults), not from the user's own choice.
+    bool isDefault(const std::string& key) const { return defaults_.count(key) != 0; }
     void unset(const std::string& key) {
         values_.erase(key);
         origins_.erase(key);
+        defaults_.erase(key);
     }
     // Where the value comes from: "--set", "--quality", a scene's node and field. Empty when unset.
     std::string origin(const std::string& key) const;
@@ -54,6 +58,7 @@ private:
     std::vector<SettingSpec> specs_;
     std::map<std::string, std::string> values_;
     std::map<std::string, std::string> origins_;
+    std::set<std::string> defaults_;
 };
 
 // `start` (a tier's typed settings) with every key of `fields` that was set applied, in order.

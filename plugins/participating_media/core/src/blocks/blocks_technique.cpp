@@ -23,11 +23,12 @@ namespace {
 constexpr int kMaxAtlasSize = 4096;
 
 const SettingField<BlocksSettings> kBlocksFields[] = {
+    // At the most, each block's impostor keeps a 16x16 tile of the largest atlas.
     {{.key = "blocks",
-      .help = "number of particle blocks",
+      .help = "number of particle blocks (a block holds at least one particle: fewer particles make as many blocks)",
       .type = SettingType::Integer,
       .min = 1,
-      .max = 1 << 20,
+      .max = (kMaxAtlasSize / 16) * (kMaxAtlasSize / 16),
       .defaultValue = "round(2 sqrt(particles)), more in optically thick media or around a lamp inside them"},
      &setInteger<&BlocksSettings::blocks>},
     {{.key = "impostor_scale", .help = "impostor texels per covered pixel", .type = SettingType::Number, .min = 0.05, .max = 4.0,

@@ -280,8 +280,9 @@ void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume
     const MediumGrid medium = voxelizeMedium(particles, volumes, voxelsAlongLongest);
     std::vector<double> key = lightingKey(lighting);
     // The same medium and light as the last frame: the same answer, without solving again.
-    if (!grid.texels.empty() && grid.size == medium.size && grid.min == medium.min && grid.lighting == key && grid.sigma == medium.sigma &&
-        grid.sigmaG == medium.sigmaG && grid.scattering == medium.scattering && grid.emission == medium.emission) {
+    if (!grid.texels.empty() && grid.size == medium.size && grid.min == medium.min && grid.maxSweeps == solve.maxSweeps &&
+        grid.lighting == key && grid.sigma == medium.sigma && grid.sigmaG == medium.sigmaG && grid.scattering == medium.scattering &&
+        grid.emission == medium.emission) {
         grid.sweeps = 0;
         return;
     }
@@ -293,6 +294,7 @@ void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume
         solve.coarser = &coarse;
     }
     buildEnvironmentGrid(medium, lighting, solve, grid);
+    grid.maxSweeps = solve.maxSweeps;
     grid.lighting = std::move(key);
     grid.sigma = medium.sigma;
     grid.sigmaG = medium.sigmaG;

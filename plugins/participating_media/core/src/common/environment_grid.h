@@ -29,6 +29,7 @@ struct EnvironmentGrid {
     std::vector<glm::vec3> fluence;  // φ
     int sweeps = 0;                  // the diffusion solve's sweeps this frame (0: the last frame's answer kept)
     // What the answer was solved for (solveEnvironmentGrid): a frame with the same keeps it.
+    int maxSweeps = 0;  // the sweep budget (scattering_sweeps): another budget is another answer
     std::vector<double> lighting;
     std::vector<float> sigma, sigmaG;
     std::vector<glm::vec3> scattering, emission;

@@ -1,6 +1,8 @@
 // The settings every mode shares, declared once, and the reading of MediaRenderSettings.
 #include "nimbus/media/media_settings.h"
 
+#include <algorithm>
+
 #include "nimbus/media/technique.h"
 
 namespace nimbus::media {
@@ -27,6 +29,10 @@ void setSliceDetail(MediaRenderSettings& s, const SettingValue& v) {
     if (s.sliceTexelsPerRadius > 0.0f) s.sliceTexelsPerRadius = static_cast<float>(v.number);
 }
 
+bool sliceResolutionAuto(const MediaRenderSettings& s) { return s.sliceTexelsPerRadius > 0.0f; }
+// The upsampler runs only where the media pass is smaller than the frame.
+bool mediaOffscreen(const MediaRenderSettings& s) { return s.mediaScaleAuto || (s.mediaScale > 0.0f && s.mediaScale < 1.0f); }
+
 enum class Acts { Everywhere, LitBySlices, SliceDeposit, MultipleScattering };
 
 struct SharedField {
@@ -49,9 +55,10 @@ const SharedField kSharedFields[] = {
        .defaultValue = "256 (balanced and fast: auto)"},
       &setSliceResolution},
      Acts::LitBySlices},
-    {{{.key = "slice_detail", .help = "with slice_resolution=auto: slice texels across the median particle's radius",
-       .type = SettingType::Number, .min = 0.25, .max = 16.0, .defaultValue = "3 (balanced: 4, fast: 2)"},
-      &setSliceDetail},
+    {{{.key = "slice_detail", .help = "slice texels across the median particle's radius",
+       .type = SettingType::Number, .min = 0.25, .max = 16.0, .defaultValue = "3 (balanced: 4, fast: 2)",
+       .actsWhen = "with slice_resolution=auto"},
+      &setSliceDetail, &sliceResolutionAuto},
      Acts::LitBySlices},
     {{{.key = "slice_deposit",
        .help = "light slices drawn as one float per particle and slab, then summed; auto: on unless a point or spot light's "
@@ -72,15 +79,18 @@ const SharedField kSharedFields[] = {
       &setMediaScale},
      Acts::Everywhere},
     {{{.key = "upsample_threshold", .help = "offscreen media: relative depth difference the upsampling treats as an edge",
-       .type = SettingType::Number, .min = 1e-4, .max = 10.0, .defaultValue = "0.2"},
-      &setNumber<&MediaRenderSettings::upsampleThreshold>},
+       .type = SettingType::Number, .min = 1e-4, .max = 10.0, .defaultValue = "0.2",
+       .actsWhen = "with media_scale below 1 or auto"},
+      &setNumber<&MediaRenderSettings::upsampleThreshold>, &mediaOffscreen},
      Acts::Everywhere},
     {{{.key = "scattering_voxels", .help = "multiple scattering: voxels of the grid its scattered light diffuses on, along the medium's longest side",
-       .type = SettingType::Integer, .min = 4, .max = 128, .defaultValue = std::to_string(kDefaultScatteringVoxels)},
+       .type = SettingType::Integer, .min = 4, .max = 128, .defaultValue = std::to_string(kDefaultScatteringVoxels),
+       .actsWhen = "in the multiple-scattering model"},
       &setInteger<&MediaRenderSettings::scatteringVoxels>},
      Acts::MultipleScattering},
     {{{.key = "scattering_sweeps", .help = "multiple scattering: most relaxation sweeps of its diffusion solve per frame (each frame starts from the last)",
-       .type = SettingType::Integer, .min = 1, .max = 1024, .defaultValue = std::to_string(kDefaultScatteringSweeps)},
+       .type = SettingType::Integer, .min = 1, .max = 1024, .defaultValue = std::to_string(kDefaultScatteringSweeps),
+       .actsWhen = "in the multiple-scattering model"},
       &setInteger<&MediaRenderSettings::scatteringSweeps>},
      Acts::MultipleScattering},
 };
@@ -132,6 +142,9 @@ void declareMediaSettings(Settings& settings, const TechniqueTable& techniques) 
     settings.declare(modeSpec(techniques));
     for (const SharedField& shared : kSharedFields) {
         SettingSpec spec = shared.field.spec;
+        if (shared.field.acts != nullptr)
+            for (unsigned t = 0; t < kQualityTierNames.size(); ++t)
+                if (shared.field.acts(sharedForTier(static_cast<QualityTier>(t)))) spec.tiers |= 1u << t;
         for (const TechniqueEntry& e : techniques.entries())
             if ((shared.acts == Acts::LitBySlices && e.lightSlices) || (shared.acts == Acts::SliceDeposit && e.sliceDeposit) ||
                 (shared.acts == Acts::MultipleScattering && e.multipleScattering))
@@ -152,6 +165,54 @@ MediaRenderSettings readMediaSettings(const Settings& settings, const TechniqueT
     s.mode = entry.name;
     s.technique = entry.read(settings, tier);
     return s;
+}
+
+namespace {
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string out;
+    for (std::size_t i = 0; i < words.size(); ++i) out += (i == 0 ? "" : i + 1 == words.size() ? " and " : ", ") + words[i];
+    return out;
+}
+
+// "it acts only with lighting=fragment (the default in tier exact)"
+std::string actsOnly(const SettingSpec& spec) {
+    std::string out = "it acts only " + spec.actsWhen;
+    std::vector<std::string> tiers;
+    for (unsigned t = 0; t < kQualityTierNames.size(); ++t)
+        if (spec.tiers & (1u << t)) tiers.emplace_back(kQualityTierNames[t]);
+    if (!tiers.empty()) out += " (as in tier " + joined(tiers) + ")";
+    return out;
+}
+
+}  // namespace
+
+std::vector<IdleSetting> idleSettings(const Settings& settings, const TechniqueTable& techniques, bool multipleScattering) {
+    const MediaRenderSettings s = readMediaSettings(settings, techniques);
+    const TechniqueEntry& entry = techniques.at(s.mode);
+    const std::string here = std::string("tier ") + qualityTierName(readQualityTier(settings)) + ", mode " + s.mode;
+    std::vector<IdleSetting> out;
+    auto idle = [&](const SettingSpec& spec, const std::string& why) {
+        if (settings.has(spec.key)) out.push_back({spec.key, "has no effect in " + why});
+    };
+    std::vector<std::string> idleKeys;
+    for (const SharedField& shared : kSharedFields)
+        if (shared.field.acts != nullptr && !shared.field.acts(s)) idleKeys.push_back(shared.field.spec.key);
+    if (entry.idle) {
+        const std::vector<std::string> own = entry.idle(s.technique);
+        idleKeys.insert(idleKeys.end(), own.begin(), own.end());
+    }
+    for (const SettingSpec& spec : settings.declarations()) {
+        if (!spec.modes.empty() && std::find(spec.modes.begin(), spec.modes.end(), s.mode) == spec.modes.end())
+            idle(spec, "mode " + s.mode + " (it acts in mode " + joined(spec.modes) + ")");
+        else if (std::find(idleKeys.begin(), idleKeys.end(), spec.key) != idleKeys.end())
+            idle(spec, here + ": " + actsOnly(spec));
+    }
+    if (!multipleScattering)
+        for (const SharedField& shared : kSharedFields)
+            if (shared.acts == Acts::MultipleScattering && entry.multipleScattering)
+                idle(shared.field.spec, "the single-scattering model (it acts only in the multiple one)");
+    return out;
 }
 
 }  // namespace nimbus::media

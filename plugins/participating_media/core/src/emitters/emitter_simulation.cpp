@@ -51,7 +51,12 @@ void moveLastInto(std::vector<T>& v, std::size_t i) {
 
 EmitterSimulation::EmitterSimulation(EmitterDesc desc, int nodeIndex) : desc_(std::move(desc)) {
     rng_.seed(mix(static_cast<std::uint64_t>(desc_.seed) ^ mix(static_cast<std::uint64_t>(static_cast<std::int64_t>(nodeIndex)))));
-    for (glm::dvec3& o : noiseOffset_) o = glm::dvec3(uniform(), uniform(), uniform()) * 256.0;
+    // Drawn z, y, x in sequence: the order GCC happened to evaluate these constructor arguments in
+    // (unspecified in C++), now fixed so every compiler simulates the same particles.
+    for (glm::dvec3& o : noiseOffset_) {
+        const double z = uniform(), y = uniform(), x = uniform();
+        o = glm::dvec3(x, y, z) * 256.0;
+    }
     burstFired_.assign(desc_.bursts.size(), 0);
     const std::size_t n = desc_.maxParticles;
     p_.position.reserve(n);

@@ -11,6 +11,9 @@
 namespace nimbus::media {
 namespace {
 
+bool perFragmentLighting(const ParticlesSettings& s) { return s.lighting == ParticleLighting::Fragment; }
+bool perParticleLighting(const ParticlesSettings& s) { return s.lighting != ParticleLighting::Fragment; }
+
 const SettingField<ParticlesSettings> kParticlesFields[] = {
     {{.key = "lighting",
       .help = "where light is evaluated: per fragment (exact), per particle fitted across its billboard, or per particle "
@@ -24,20 +27,23 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
               "particle with a central column over 0.1)",
       .type = SettingType::Boolean,
       .defaultValue = "off (balanced: on)",
-      .tiers = kTierBalanced | kTierFast},
-     &setBoolean<&ParticlesSettings::exactNearLamps>},
+      .actsWhen = "with lighting=particle or particle_exact",
+      .showsWith = "a point or spot light inside the medium"},
+     &setBoolean<&ParticlesSettings::exactNearLamps>, &perParticleLighting},
+    // The two below are the per-fragment pass's; frames exact_near_lamps shades per fragment keep
+    // their defaults.
     {{.key = "soft_particles",
       .help = "clip each particle's kernel at opaque surfaces (off: the billboard plane test)",
       .type = SettingType::Boolean,
       .defaultValue = "on",
-      .tiers = kTierExact},
-     &setBoolean<&ParticlesSettings::softParticles>},
+      .actsWhen = "with lighting=fragment"},
+     &setBoolean<&ParticlesSettings::softParticles>, &perFragmentLighting},
     {{.key = "layer_light",
       .help = "integrate the light's transmittance over each particle (off: at one point, faster)",
       .type = SettingType::Boolean,
       .defaultValue = "on",
-      .tiers = kTierExact},
-     &setBoolean<&ParticlesSettings::layerLight>},
+      .actsWhen = "with lighting=fragment"},
+     &setBoolean<&ParticlesSettings::layerLight>, &perFragmentLighting},
 };
 
 class ParticlesTechnique final : public MediaTechnique {
@@ -110,6 +116,7 @@ TechniqueEntry particlesTechnique() {
             .sliceDeposit = true,
             .settings = specsOf(kParticlesFields),
             .read = readerOf(kParticlesFields),
+            .idle = idleOf(kParticlesFields),
             .create = [] { return std::make_unique<ParticlesTechnique>(); },
             .benchRows = [](const ParticleSet&, const std::vector<glm::dvec3>&) {
                 std::vector<BenchRow> rows{{"particles", {{"mode", "particles"}}}};

@@ -7,11 +7,22 @@
 #include "nimbus/media/optics.h"
 
 namespace nimbus::media {
+namespace {
+
+constexpr int kGrid = 32;
+
+// The cell of the light's 32x32 column grid that a texture coordinate falls in, edges included; a
+// particle far outside the view (or at a non-finite coordinate) counts in the nearest edge cell.
+int gridCell(double u) {
+    if (!(u > 0.0)) return 0;
+    return u >= 1.0 ? kGrid - 1 : static_cast<int>(u * kGrid);
+}
+
+}  // namespace
 
 SliceEstimate estimateSlices(const ParticleSet& particles, const gpu::LightView& view, const glm::dvec3& origin) {
     SliceEstimate e;
     if (particles.empty()) return e;
-    constexpr int kGrid = 32;
     std::vector<double> column(kGrid * kGrid, 0.0);
     const glm::dmat4 viewMatrix(view.view);
     const glm::dmat4 projection = glm::dmat4(view.viewProjection) * glm::inverse(viewMatrix);
@@ -34,8 +45,7 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const gpu::LightView&
         const glm::dvec4 clip = projection * v;
         if (clip.w <= 0.0) continue;
         const glm::dvec2 uv = (glm::dvec2(clip) / clip.w) * 0.5 + 0.5;
-        const int x = std::clamp(static_cast<int>(uv.x * kGrid), 0, kGrid - 1);
-        const int y = std::clamp(static_cast<int>(uv.y * kGrid), 0, kGrid - 1);
+        const int x = gridCell(uv.x), y = gridCell(uv.y);
         column[static_cast<std::size_t>(y * kGrid + x)] += columnPerSigmaRadius * particles.sigma[i] * r;
     }
     e.depthNear = std::max(nearest, static_cast<double>(view.depthNear));
@@ -57,6 +67,9 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const gpu::LightView&
     // and linear interpolation across a slice one radius deep misses how τ grows there. Half the
     // spacing (docs/design-notes.md).
     if (view.perspective && nearest <= static_cast<double>(view.depthNear)) wanted *= 2.0;
+    // A medium whose extent overflows the light's view (radii near the float limit) has no finite
+    // estimate: it gets the most slices.
+    if (!(wanted <= static_cast<double>(kMaxSlices))) wanted = kMaxSlices;
     const int rounded = 4 * static_cast<int>(std::ceil(std::min(wanted, static_cast<double>(kMaxSlices)) / 4.0));
     e.slices = std::clamp(rounded, kMinSlices, kMaxSlices);
     return e;

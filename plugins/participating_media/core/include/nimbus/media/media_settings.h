@@ -8,6 +8,7 @@
 #include <any>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "nimbus/base/quality_tier.h"
 #include "nimbus/base/settings.h"
@@ -57,6 +58,19 @@ void declareMediaSettings(Settings& settings, const TechniqueTable& techniques);
 // The settings `settings` fix: the tier's values with every key set applied, the mode's own
 // settings included. InputError naming where a bad value came from.
 MediaRenderSettings readMediaSettings(const Settings& settings, const TechniqueTable& techniques);
+
+// A key set where it has no effect, with why: "has no effect in mode billboards (it acts in mode
+// particles, blocks and raymarch)", "has no effect in tier balanced, mode particles: it acts only
+// with lighting=fragment (as in tier exact)".
+struct IdleSetting {
+    std::string key;
+    std::string why;
+};
+// Every key set in `settings` that would not act on a frame they read as: one a mode does not
+// draw, one the tier's or another key's value turns off (SettingField::acts), one of the
+// multiple-scattering model's in a single-scattering scene. From the declarations alone, so a
+// new key is covered when it is declared. InputError as readMediaSettings for a bad value.
+std::vector<IdleSetting> idleSettings(const Settings& settings, const TechniqueTable& techniques, bool multipleScattering);
 
 // A technique's own settings from MediaRenderSettings::technique, or S{} where it holds none.
 template <class S>

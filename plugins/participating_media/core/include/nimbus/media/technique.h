@@ -77,6 +77,9 @@ struct TechniqueEntry {
     std::vector<SettingSpec> settings;  // its own keys (the table sets their `modes` to this name)
     // Its typed settings for `tier` with every one of its keys that was set applied.
     std::function<std::any(const Settings&, QualityTier)> read;
+    // Its keys that do not act with its settings as `read` gave them (SettingField::acts, e.g. a
+    // key only per-fragment lighting reads); a key set there is refused. Null: they all act.
+    std::function<std::vector<std::string>(const std::any&)> idle;
     std::function<std::unique_ptr<MediaTechnique>()> create;
     // Its rows of `sandbox bench`'s sweep for a scene's particles and lamps; none where empty.
     std::function<std::vector<BenchRow>(const ParticleSet&, const std::vector<glm::dvec3>& lamps)> benchRows;
@@ -103,6 +106,12 @@ private:
 template <class S, std::size_t N>
 std::function<std::any(const Settings&, QualityTier)> readerOf(const SettingField<S> (&fields)[N]) {
     return [&fields](const Settings& settings, QualityTier tier) -> std::any { return readFields<S>(settings, fields, S::forTier(tier)); };
+}
+
+// TechniqueEntry::idle for the same fields: the keys whose `acts` is false for the read settings.
+template <class S, std::size_t N>
+std::function<std::vector<std::string>(const std::any&)> idleOf(const SettingField<S> (&fields)[N]) {
+    return [&fields](const std::any& read) { return idleKeys(fields, std::any_cast<const S&>(read)); };
 }
 
 // particles, blocks, raymarch and billboards (core/src/frame/technique_table.cpp).

@@ -117,6 +117,12 @@ MediaRenderSettings readMediaSettings(const Settings* settings, const TechniqueT
 // The same with the App's own table (MediaTechniques).
 MediaRenderSettings readMediaSettings(nimbus::ecs::World& world);
 
+// Refuses (InputError naming where it came from) a key the user set that has no effect on the
+// frames the World's settings and scene would draw (media::idleSettings); one a scene's render
+// block set as a default is logged as a warning instead, since the scene does not know the tier
+// it will be drawn in. A host calls it once its settings and scene are in place.
+void refuseIdleSettings(nimbus::ecs::World& world);
+
 // Gathers the particle set the renderers draw from the ECS state (also what `sandbox reference`
 // renders, so both see exactly the same particles).
 void gatherParticles(nimbus::ecs::World& world, ParticleSet& out);
