@@ -74,13 +74,22 @@ std::string formatted(const char* format, double a, double b = 0.0, double c = 0
     return buffer;
 }
 
-// "density, albedo; metadata emission, g": which attributes became grids and which metadata.
+// "grids density, albedo; metadata emission (0, 0, 0), g 0.3": which attributes became grids, and
+// the values of those that are metadata (for a user to type into a DCC tool's shader).
 std::string layout(const media::vdb::MediumGrids& g) {
+    const openvdb::FloatGrid& d = *g.density;
     std::string grids = "density", meta;
-    auto place = [&](const char* name, bool isGrid) { (isGrid ? grids : meta) += std::string(isGrid || !meta.empty() ? ", " : "") + name; };
-    place("albedo", g.albedo != nullptr);
-    place("emission", g.emission != nullptr);
-    place("g", g.g != nullptr);
+    auto colour = [&](const char* name) {
+        const openvdb::Vec3s c = d.metaValue<openvdb::Vec3s>(name);
+        return formatted(" (%.4g, %.4g, %.4g)", c.x(), c.y(), c.z());
+    };
+    auto place = [&](const char* name, bool isGrid, const std::string& value) {
+        std::string& list = isGrid ? grids : meta;
+        list += (list.empty() ? "" : ", ") + std::string(name) + (isGrid ? "" : value);
+    };
+    place("albedo", g.albedo != nullptr, g.albedo ? "" : colour("albedo"));
+    place("emission", g.emission != nullptr, g.emission ? "" : colour("emission"));
+    place("g", g.g != nullptr, g.g ? "" : formatted(" %.4g", d.metaValue<float>("g")));
     return "grids " + grids + (meta.empty() ? "" : "; metadata " + meta);
 }
 
