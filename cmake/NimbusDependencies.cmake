@@ -11,6 +11,10 @@ find_package(OpenImageIO CONFIG REQUIRED)
 find_package(embree 3 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+# Debian's libopenvdb-dev ships a find module (no config file) in a folder of its own; it also
+# needs Boost.Iostreams, TBB and Blosc (bootstrap installs them).
+list(APPEND CMAKE_MODULE_PATH "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/OpenVDB")
+find_package(OpenVDB REQUIRED COMPONENTS openvdb)
 if(NIMBUS_BUILD_TESTS)
   find_package(GTest REQUIRED)
 endif()

@@ -16,5 +16,6 @@ CommandRunner addValidateCommand(CLI::App& app);
 CommandRunner addBenchCommand(CLI::App& app);
 CommandRunner addSettingsCommand(CLI::App& app);
 CommandRunner addEditCommand(CLI::App& app);
+CommandRunner addExportCommand(CLI::App& app);
 
 }  // namespace nimbus::sandbox

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
     runners["bench"] = addBenchCommand(app);
     runners["settings"] = addSettingsCommand(app);
     runners["edit"] = addEditCommand(app);
+    runners["export"] = addExportCommand(app);
 
     try {
         app.parse(argc, argv);
