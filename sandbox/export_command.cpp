@@ -4,7 +4,6 @@
 // metres (plugins/participating_media/vdb, docs/export.md), for a path tracer or a DCC tool.
 // Every bad argument is refused in one line before the scene is loaded; so is a voxel that would
 // make the grid absurdly large, and a scene with no medium at T.
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include "cli_options.h"
 #include "commands.h"
 #include "nimbus/base/error.h"
 #include "nimbus/base/log.h"
@@ -35,15 +35,6 @@ struct ExportOptions {
     std::string voxel;  // empty: chosen from the medium
 };
 
-// The whole of `text` as a number (CLI11 would print two lines and its own exit code).
-double parseNumber(const std::string& option, const std::string& text) {
-    char* end = nullptr;
-    errno = 0;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE) throwInputError(option, text, "", "not a number");
-    return value;
-}
-
 bool endsWithVdb(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -59,13 +50,8 @@ void checkArguments(const ExportOptions& o, double& time, double& voxel) {
     if (!endsWithVdb(o.out)) throwInputError("--out", o.out, "", "must name a .vdb file");
     const fs::path folder = fs::path(o.out).parent_path().empty() ? fs::path(".") : fs::path(o.out).parent_path();
     if (!fs::is_directory(folder)) throwInputError("--out", o.out, "", "its folder " + folder.string() + " does not exist");
-    time = parseNumber("--time", o.time);
-    if (!std::isfinite(time) || time < 0.0) throwInputError("--time", o.time, "", "must be a finite time >= 0");
-    voxel = 0.0;
-    if (!o.voxel.empty()) {
-        voxel = parseNumber("--voxel", o.voxel);
-        if (!std::isfinite(voxel) || !(voxel > 0.0)) throwInputError("--voxel", o.voxel, "", "must be a finite length > 0 (metres)");
-    }
+    time = parseTime(o.time);
+    voxel = o.voxel.empty() ? 0.0 : parsePositive(o.voxel, "--voxel", 1e6, "metres");
 }
 
 std::string formatted(const char* format, double a, double b = 0.0, double c = 0.0) {
@@ -142,7 +128,7 @@ CommandRunner addExportCommand(CLI::App& app) {
     options->command = cmd;
     cmd->add_option("scene", options->scene, "glTF scene (.gltf or .glb)");
     cmd->add_option("--out", options->out, "the .vdb file to write");
-    cmd->add_option("--time", options->time, "scene time in seconds (animation, emitters)")->capture_default_str();
+    addTimeOption(cmd, options->time, "scene time in seconds (animation, emitters)");
     cmd->add_option("--voxel", options->voxel, "voxel side in metres (default: from the medium, docs/export.md)");
     return [options] { return run(*options); };
 }
