@@ -21,6 +21,7 @@
 #define MEDIA_SLABS_UNIT 0
 #define MEDIA_HOST_DEPTH_UNIT 0       // a standard-Z host depth, re-encoded by media_host_depth
 #define MEDIA_ENVIRONMENT_UNIT 10     // multiple scattering: the environment grid (sampler3D)
+#define MEDIA_ENVIRONMENT_DIRECTIONAL_UNIT 12  // multiple scattering: the grid's P1 anisotropy (sampler3D)
 #define MEDIA_NOISE_GRID_UNIT 11      // volume slices: the noise volumes' σ_t on the raymarch grid (sampler3D)
 // Image units.
 #define MEDIA_GRID_SCATTERING_IMAGE 0  // raymarch_noise.comp: rgb σ_s, a σ_t

@@ -13,6 +13,11 @@ from gltf_builder import Builder, ellipsoid_blob  # noqa: E402
 
 OUT = os.path.join(os.path.dirname(__file__), "..", "..", "content", "scenes")
 
+# Water clouds absorb almost nothing in the visible and scatter strongly forwards (Mie scattering
+# by droplets of ~10 um: g 0.85-0.9); the clouds below take those values.
+WATER_CLOUD_ALBEDO = [0.999, 0.999, 0.999]
+WATER_CLOUD_G = 0.85
+
 
 # -- procedural textures (sRGB bytes; tools/scenegen writes them as PNG beside the scene) ---------
 
@@ -108,7 +113,7 @@ def cloud():
     # Large particles, as billboard clouds are usually built: a plane cutting one is clearly visible
     # when particles are drawn as flat billboards (the seam blocks remove).
     positions, sizes, densities = blob_cloud(rng, 500, (0, 4, 0), (3.6, 1.8, 2.6), particle_radius=(0.9, 1.5))
-    b.node("cloud", ext={"medium": {"extinction": 0.8, "albedo": [0.95, 0.95, 0.95], "g": 0.5},
+    b.node("cloud", ext={"medium": {"extinction": 0.8, "albedo": WATER_CLOUD_ALBEDO, "g": WATER_CLOUD_G},
                          "particles": b.particles(positions, sizes, densities)})
     b.node("wing", translation=(0.5, 4.1, 0), rotation=(0, 0, 0.0871557, 0.9961947),
            mesh=b.box_mesh("wing", (9.0, 0.08, 2.2), metal))
@@ -133,7 +138,7 @@ def cumulus():
         positions += p
         sizes += r
         densities += d
-    b.node("cumulus", ext={"medium": {"extinction": 1.2, "albedo": [0.97, 0.97, 0.97], "g": 0.6},
+    b.node("cumulus", ext={"medium": {"extinction": 1.2, "albedo": WATER_CLOUD_ALBEDO, "g": WATER_CLOUD_G},
                            "particles": b.particles(positions, sizes, densities)})
     b.sun("sun", direction=(-0.45, -0.55, -0.7), intensity=3.0)
     b.camera("main", eye=(0, 7, 26), target=(0, 9, 0), yfov=0.75)
@@ -329,11 +334,67 @@ def courtyard():
     return b
 
 
+def steam():
+    """Issue 35's demo: a white steam plume from a plant's stack drifting over the roofs beside it,
+    in a low afternoon sun: the plume scatters many times (albedo 0.995) and shadows the roofs and
+    the ground, the stack and the hall shadow the plume's base."""
+    b = Builder()
+    b.environment(background=[0.36, 0.5, 0.76], ambient=[0.12, 0.15, 0.22])
+    ground = b.material("ground", (0.42, 0.41, 0.38))
+    brick = b.material("brick", (0.55, 0.3, 0.22))
+    concrete = b.material("concrete", (0.62, 0.6, 0.56))
+    roof = b.material("roof", (0.3, 0.32, 0.35))
+    b.node("ground", mesh=b.plane_mesh("ground", 60, 60, ground))
+    b.node("hall", translation=(-4.0, 2.5, -1.0), mesh=b.box_mesh("hall", (7.0, 5.0, 5.0), concrete))
+    b.node("hall_roof", translation=(-4.0, 5.1, -1.0), mesh=b.box_mesh("hall_roof", (7.4, 0.2, 5.4), roof))
+    b.node("stack", translation=(0.5, 5.0, -1.0), mesh=b.box_mesh("stack", (1.0, 10.0, 1.0), brick))
+    b.node("store", translation=(7.5, 2.0, -3.0), mesh=b.box_mesh("store", (5.0, 4.0, 6.0), concrete))
+    b.node("store_roof", translation=(7.5, 4.1, -3.0), mesh=b.box_mesh("store_roof", (5.4, 0.2, 6.4), roof))
+    b.node("plume", translation=(0.5, 10.0, -1.0),
+           ext={"medium": {"extinction": 5.0, "albedo": [0.995, 0.995, 0.995], "g": 0.8},
+                "emitter": {"preset": "smoke", "seed": 17, "rate": 24, "max_particles": 700, "lifetime": [6.0, 9.0],
+                            "shape": {"type": "disc", "radius": 0.45}, "velocity": [0.0, 2.2, 0.0],
+                            "radius": [[0.0, 0.45], [1.0, 1.9]], "wind": [0.9, 0.0, 0.15],
+                            "albedo_over_life": [[0.0, 0.995, 0.995, 0.995]]}})
+    b.sun("sun", direction=(-0.55, -0.5, -0.67), intensity=3.0, color=(1.0, 0.95, 0.88))
+    b.camera("main", eye=(13.0, 5.0, 17.0), target=(3.0, 10.0, -1.5), yfov=0.9)
+    return b
+
+
+def cumulus_field():
+    """Issues 33 and 35: a field of cumulus from the ellipsoid generator over a plain, lit by a low
+    sun that the main camera looks towards (silver linings, dark bases), with an airliner flying
+    through the nearest cloud; the camera "sunlit" looks along the sun at the clouds' lit sides."""
+    b = Builder()
+    b.environment(background=[0.34, 0.47, 0.72], ambient=[0.13, 0.17, 0.27])
+    plain = b.material("plain", (0.36, 0.4, 0.3))
+    b.node("plain", mesh=b.plane_mesh("plain", 400, 400, plain))
+    clouds = [((-30, 34, -70), (26, 14, 20), 1), ((8, 30, -55), (22, 12, 18), 2), ((42, 36, -95), (30, 15, 22), 3),
+              ((-62, 38, -120), (28, 14, 22), 4), ((20, 40, -140), (34, 16, 26), 5)]
+    for i, (centre, size, seed) in enumerate(clouds):
+        b.node("cumulus_%d" % i, translation=centre,
+               ext={"medium": {"extinction": 4.0, "albedo": WATER_CLOUD_ALBEDO, "g": WATER_CLOUD_G},
+                    "generator": {"kind": "ellipsoids", "seed": seed, "particles": 2200, "size": list(size), "radius": [1.2, 2.4],
+                                  "ellipsoids": 6}})
+    hull = b.material("hull", (0.78, 0.79, 0.8))
+    # Level, crossing the nearest cloud left to right, its nose out of the cloud's far side.
+    aircraft = b.node("aircraft", translation=(4.0, 30.5, -55.0), rotation=(0, 0.2588190, 0, 0.9659258))
+    fuselage = b.node("fuselage", mesh=b.box_mesh("fuselage", (18.0, 2.0, 2.0), hull), root=False)
+    wing = b.node("wing", translation=(1.0, 0, 0), mesh=b.box_mesh("wing", (4.0, 0.3, 22.0), hull), root=False)
+    b.doc["nodes"][aircraft]["children"] = [fuselage, wing]
+    # The sun 12 degrees above the horizon, ahead of the main camera.
+    b.sun("sun", direction=(0.08, -0.208, 0.975), intensity=3.0, color=(1.0, 0.93, 0.84))
+    b.camera("main", eye=(0, 8, 10), target=(-2, 32, -80), yfov=0.62)
+    b.camera("sunlit", eye=(-5, 40, -250), target=(0, 34, -90), yfov=0.5)
+    return b
+
+
 SCENES = {"demo": demo, "cloud": cloud, "cumulus": cumulus, "cumulus_aircraft": cumulus_aircraft, "smoke": smoke, "campfire": campfire,
-          "jet": jet, "explosion": explosion, "fog_smoke": fog_smoke, "courtyard": courtyard}
+          "jet": jet, "explosion": explosion, "fog_smoke": fog_smoke, "courtyard": courtyard, "cumulus_field": cumulus_field,
+          "steam": steam}
 
 # Times at which the scenes are rendered for tests and the demo (emitters need time to fill).
-TIMES = {"smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8, "fog_smoke": 8.0, "courtyard": 6.0}
+TIMES = {"steam": 8.0, "smoke": 8.0, "campfire": 4.0, "jet": 6.0, "explosion": 0.8, "fog_smoke": 8.0, "courtyard": 6.0}
 
 if __name__ == "__main__":
     wanted = sys.argv[1:] or list(SCENES)

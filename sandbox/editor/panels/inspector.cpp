@@ -105,6 +105,8 @@ void environmentSection(EditorState& state, FieldWidgets& f) {
     ImGui::TextUnformatted("Scene environment");
     f.colour("background", -1, kMedia + ".background", {0.0, 0.0, 0.0}, true);
     f.colour("ambient", -1, kMedia + ".ambient", {0.0, 0.0, 0.0}, true);
+    // The optical model: every mode and the reference snapshot follow it (docs/scene-format.md).
+    f.choice("scattering", -1, kMedia + ".scattering", {"multiple", "single"}, "multiple");
     if (getField(state.json(), -1, kMedia + ".fog").is_null()) {
         if (ImGui::Button("Add fog"))
             f.commit(-1, kMedia + ".fog", {{"mode", "exp"}, {"density", 0.02}, {"color", {0.6, 0.65, 0.7}}});

@@ -46,6 +46,7 @@ std::optional<std::string> drawTimeline(EditorState& state, Playback& playback);
 
 struct PerformanceRequest {
     bool takeReference = false;
+    bool stopReference = false;  // keep the picture so far
     bool applyBudget = false;
 };
 // Frame time per pass, particle counts, mode and quality, the frame budget, the reference snapshot.

@@ -102,26 +102,30 @@ void settingsSection(EditorState& state, std::optional<std::string>& error) {
     ImGui::TreePop();
 }
 
+// While it refines, the picture so far is shown and judged: its paths per pixel and noise beside
+// its error, so a user sees when the error is no longer the judge's noise.
 void referenceSection(EditorState& state, const ReferenceSnapshot& snapshot, PerformanceRequest& request) {
     ImGui::BeginDisabled(snapshot.running());
     if (ImGui::Button("Reference snapshot")) request.takeReference = true;
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (snapshot.running()) {
-        ImGui::ProgressBar(static_cast<float>(snapshot.progress()), ImVec2(-1, 0));
-        return;
-    }
     const auto* result = snapshot.result();
-    if (!result) {
+    if (snapshot.running()) {
+        if (ImGui::Button("Stop")) request.stopReference = true;
+        ImGui::SameLine();
+        ImGui::ProgressBar(static_cast<float>(snapshot.progress()), ImVec2(-1, 0));
+    } else if (!result) {
         ImGui::TextDisabled("renders `sandbox reference` of this view and time");
         return;
     }
+    if (!result) return;
     if (snapshot.revision() != state.revision()) {
         ImGui::TextDisabled("out of date: the scene or view changed since");
         return;
     }
     ImGui::Text("rel-RMSE %.4g  PSNR %.1f dB  p99 |d| %.3g  (%.1f s)", result->metrics.relRmse, result->metrics.psnr,
                 result->metrics.p99Abs, result->seconds);
+    if (result->paths > 0) ImGui::Text("%d paths/pixel, noise %.2f%% of the mean", result->paths, 100.0 * result->relativeNoise);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 
 namespace nimbus::sandbox::editor {
 
@@ -24,8 +25,15 @@ void ReferenceSnapshot::cancel() {
     scene_.reset();
 }
 
+void ReferenceSnapshot::stop() {
+    update();  // a round finished since the last frame counts
+    progress_.cancel = true;
+    join();
+    pending_.reset();
+}
+
 void ReferenceSnapshot::start(Session& session, const std::string& camera, const assets::ResolvedCamera* cameraOverride,
-                              const assets::RgbImage& realtime, std::uint64_t revision) {
+                              const assets::RgbImage& realtime, std::uint64_t revision, int paths) {
     cancel();
     progress_.cancel = false;
     progress_.tilesDone = 0;
@@ -33,28 +41,76 @@ void ReferenceSnapshot::start(Session& session, const std::string& camera, const
     revision_ = revision;
     scene_ = session.sharedScene();  // the inputs point into it
     inputs_ = makeReferenceScene(session, camera, realtime.width, realtime.height, cameraOverride);
+    realtime_ = realtime;
     media::reference::ReferenceSettings settings;
     settings.width = realtime.width;
     settings.height = realtime.height;
     settings.progress = false;
     settings.watch = &progress_;
-    pending_ = std::make_unique<Result>();
-    pending_->realtime = realtime;
-    worker_ = std::thread([this, settings] {
-        const auto begin = std::chrono::steady_clock::now();
-        pending_->reference = media::reference::renderReference(inputs_->inputs, settings);
-        pending_->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    worker_ = std::thread([this, settings, paths] {
+        renderRounds(settings, paths);
         finished_ = true;
     });
 }
 
+// Rounds of 4, 4, 8, 16, ... paths per pixel (seeds 1, 2, ...) until `paths` in all; one round when
+// nothing is path traced.
+void ReferenceSnapshot::renderRounds(const media::reference::ReferenceSettings& base, int paths) {
+    const auto begin = std::chrono::steady_clock::now();
+    assets::RgbImage sum(base.width, base.height), variance(base.width, base.height);
+    int done = 0;
+    for (std::uint64_t round = 1; !progress_.cancel; ++round) {
+        media::reference::ReferenceSettings settings = base;
+        settings.spp = std::min(std::max(done, 4), paths - done);
+        settings.seed = round;
+        progress_.tilesDone = 0;
+        const media::reference::ReferenceRenderer renderer(inputs_->inputs, settings);
+        assets::RgbImage error;
+        const assets::RgbImage image = renderer.render(nullptr, &error);
+        if (progress_.cancel) return;
+        const bool multiple = renderer.multiple();
+        const float n = static_cast<float>(settings.spp);
+        for (std::size_t i = 0; i < sum.rgb.size(); ++i) {  // the mean of n paths counts n times; its variance n² times
+            sum.rgb[i] += (multiple ? n : 1.0f) * image.rgb[i];
+            variance.rgb[i] += multiple ? n * n * error.rgb[i] * error.rgb[i] : 0.0f;
+        }
+        done = multiple ? done + settings.spp : 0;
+        publish(sum, variance, done, std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
+        if (!multiple || done >= paths) return;
+    }
+}
+
+void ReferenceSnapshot::publish(const assets::RgbImage& sum, const assets::RgbImage& variance, int paths, double seconds) {
+    auto result = std::make_unique<Result>();
+    result->realtime = realtime_;
+    result->reference = sum;
+    const float scale = paths > 0 ? 1.0f / static_cast<float>(paths) : 1.0f;
+    double noise = 0.0, mean = 0.0;
+    for (std::size_t i = 0; i < sum.pixelCount(); ++i) {
+        float* rgb = &result->reference.rgb[3 * i];
+        for (int c = 0; c < 3; ++c) rgb[c] *= scale;
+        mean += luminance(rgb[0], rgb[1], rgb[2]);
+        noise += luminance(std::sqrt(variance.rgb[3 * i]), std::sqrt(variance.rgb[3 * i + 1]), std::sqrt(variance.rgb[3 * i + 2])) * scale;
+    }
+    result->paths = paths;
+    result->relativeNoise = mean > 0.0 ? noise / mean : 0.0;
+    result->seconds = seconds;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    pending_ = std::move(result);
+}
+
 void ReferenceSnapshot::update() {
-    if (!worker_.joinable() || !finished_) return;
-    join();
-    if (progress_.cancel) return;
-    pending_->metrics = media::reference::compareImages(pending_->realtime, pending_->reference);
-    pending_->heat = errorHeatMap(pending_->realtime, pending_->reference);
-    result_ = std::move(pending_);
+    std::unique_ptr<Result> next;
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        next = std::move(pending_);
+    }
+    if (next && !progress_.cancel) {
+        next->metrics = media::reference::compareImages(next->realtime, next->reference);
+        next->heat = errorHeatMap(next->realtime, next->reference);
+        result_ = std::move(next);
+    }
+    if (worker_.joinable() && finished_) join();
 }
 
 double ReferenceSnapshot::progress() const {

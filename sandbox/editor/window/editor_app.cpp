@@ -192,7 +192,8 @@ void EditorApp::drawWindows() {
     request_ = {};
     report(drawPerformance(*state_, *viewport_, snapshot_, budgetMs_, request_));
     ImGui::End();
-    if (request_.takeReference) startReference();
+    if (request_.takeReference) startReference(kInteractivePaths);
+    if (request_.stopReference) snapshot_.stop();
     if (request_.applyBudget) applyBudget();
 
     layoutWindow("Status", 0, display.y - kStatusHeight, display.x, kStatusHeight);
@@ -230,10 +231,10 @@ void EditorApp::shortcuts() {
     }
 }
 
-void EditorApp::startReference() {
+void EditorApp::startReference(int paths) {
     viewport_->render(*state_, false);
     snapshot_.start(state_->session(), viewport_->freeCamera() ? "" : viewport_->sceneCamera(), viewport_->cameraOverride(),
-                    viewport_->image(*state_), state_->revision());
+                    viewport_->image(*state_), state_->revision(), paths);
 }
 
 // Walks the quality ladder with the viewport's size, then keeps the chosen rung as the view's settings.
@@ -290,13 +291,13 @@ void EditorApp::writeViewport(const std::filesystem::path& file) {
 }
 
 void EditorApp::reference(const std::filesystem::path& file) {
-    startReference();
+    startReference(ReferenceSnapshot::kDefaultPaths);
     while (snapshot_.running()) frame(false);
     snapshot_.update();
     const auto* result = snapshot_.result();
     if (!result) throwInputError("", "reference", "", "the snapshot was cancelled");
-    std::printf("reference: rel_rmse %.9g psnr %.6g p99_abs %.9g (%.1f s)\n", result->metrics.relRmse, result->metrics.psnr,
-                result->metrics.p99Abs, result->seconds);
+    std::printf("reference: rel_rmse %.9g psnr %.6g p99_abs %.9g paths %d noise %.4g (%.1f s)\n", result->metrics.relRmse,
+                result->metrics.psnr, result->metrics.p99Abs, result->paths, result->relativeNoise, result->seconds);
     std::fflush(stdout);
     if (!file.empty()) assets::writeImage(file, result->reference);
 }

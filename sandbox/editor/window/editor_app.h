@@ -57,7 +57,10 @@ private:
     void showTitle();
     void applyBudget();
     void report(const std::optional<std::string>& error);
-    void startReference();
+    // The button's snapshot refines until this many paths per pixel, or Stop; a script's `reference`
+    // stops at `sandbox reference`'s default.
+    static constexpr int kInteractivePaths = 1024;
+    void startReference(int paths);
     void initImGui();
 
     std::unique_ptr<gpu::Context> context_;

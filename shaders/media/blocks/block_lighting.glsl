@@ -335,7 +335,7 @@ vec3 blockSegmentSource(vec3 origin, vec3 dir, BlockProfile profile, vec2 tails,
 #endif
 #ifdef MEDIA_MULTIPLE  // the environment at each piece's point, as the lights
     vec3 scattered = vec3(0.0);
-    for (int k = 0; k < pieces; ++k) scattered += (p.weight[k] * orderFactor[k]) * ambientSource(origin + dir * p.at[k], block);
+    for (int k = 0; k < pieces; ++k) scattered += (p.weight[k] * orderFactor[k]) * ambientSource(origin + dir * p.at[k], dir, block);
 #else
     vec3 scattered = frame.ambient.rgb * weighted;
 #endif

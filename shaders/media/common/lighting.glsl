@@ -59,11 +59,11 @@ vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float vis
     return phase * s.irradiance * (visibility * transmittance);
 }
 
-// The scattering source of the environment at p per unit albedo: unshadowed ambient, or in the
-// multiple model the grid's environment and light scattered more than once.
-vec3 ambientSource(vec3 p, GpuParticle particle) {
+// The scattering source of the environment at p per unit albedo, seen along viewDir: unshadowed
+// ambient, or in the multiple model the grid's environment and light scattered more than once.
+vec3 ambientSource(vec3 p, vec3 viewDir, GpuParticle particle) {
 #ifdef MEDIA_MULTIPLE
-    return multipleSource(p);
+    return multipleSource(p, viewDir, particle.emissionG.w);
 #else
     return frame.ambient.rgb;
 #endif
@@ -165,7 +165,7 @@ vec3 segmentSource(vec3 origin, vec3 dir, Chord c, float radius, float lo, float
     vec3 p = origin + dir * (c.tClosest + u);
     vec3 entry = origin + dir * (c.tClosest + lo);
     float vBar = shadingDepthFraction(tau) * tau;
-    vec3 scattered = ambientSource(p, particle);
+    vec3 scattered = ambientSource(p, dir, particle);
     int i = 0;
     if (frame.counts.x > 0) do {  // not for: llvmpipe runs a for loop's body once more, masked
 #ifdef SEGMENT_SKIPS_LIGHT  // particle_lighting.comp: lights its fragments evaluate

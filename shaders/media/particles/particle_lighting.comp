@@ -55,7 +55,7 @@ vec4 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank)
     Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, radius);
     float u0 = max(0.0, chord.tClosest - chord.halfChord) - chord.tClosest;  // the medium starts at the eye
     float u1 = chord.halfChord;
-    if (!(u1 > u0)) return vec4(particle.albedoSigma.rgb * ambientSource(particle.positionRadius.xyz, particle) + particle.emissionG.rgb, 0.0);
+    if (!(u1 > u0)) return vec4(particle.albedoSigma.rgb * ambientSource(particle.positionRadius.xyz, dir, particle) + particle.emissionG.rgb, 0.0);
     float tau = particle.albedoSigma.w * chordIntegral(chord, radius, u0, u1);
     float u = chordShadingPoint(chord, radius, u0, u1, tau);
     float lo = max(u0, -chord.halfChord);
@@ -67,7 +67,7 @@ vec4 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank)
     vec3 p = origin + dir * (chord.tClosest + u);
     vec3 entry = origin + dir * (chord.tClosest + lo);
     float vBar = shadingDepthFraction(tau) * tau;
-    vec3 scattered = ambientSource(p, particle);
+    vec3 scattered = ambientSource(p, dir, particle);
     int i = 0;
     if (frame.counts.x > 0) do {  // not for: llvmpipe runs a for loop's body once more, masked
         if (litPerFragment(i)) continue;

@@ -52,10 +52,11 @@ vec3 lightAt(vec3 p, vec3 dir, float g) {
     return sum;
 }
 
-// The environment's source at p per unit albedo: unshadowed ambient, or the multiple model's grid.
-vec3 ambientAt(vec3 p) {
+// The environment's source at p per unit albedo seen along dir: unshadowed ambient, or the
+// multiple model's grid.
+vec3 ambientAt(vec3 p, vec3 dir, float g) {
 #ifdef MEDIA_MULTIPLE
-    return multipleSource(p);
+    return multipleSource(p, dir, g);
 #else
     return frame.ambient.rgb;
 #endif
@@ -85,7 +86,7 @@ void main() {
         if (!(a.w > 0.0)) continue;
         vec4 e = texture(uEmission, uvw);
         float g = clamp(e.w / a.w, -0.999, 0.999);
-        vec3 source = (a.rgb * (lightAt(p, dir, g) + ambientAt(p)) + e.rgb) / a.w;  // J per unit optical depth
+        vec3 source = (a.rgb * (lightAt(p, dir, g) + ambientAt(p, dir, g)) + e.rgb) / a.w;  // J per unit optical depth
         float alpha = oneMinusExpNeg(a.w * dt);
         radiance += transmittance * alpha * source;
         transmittance *= 1.0 - alpha;

@@ -1,22 +1,30 @@
 // The real-time multiple-scattering model (common/environment_grid.h, common/diffusion.h) against
-// the judge's multiple scattering, stored at 96×54 with 128 paths per pixel
-// (tests/data/multiple_scattering/make_references.sh; their own noise, the mean standard error, is
-// 0.3–1.2 % of the mean radiance and sits inside every bound). rel-RMSE as the content tests
-// measure it. Each bound is the 10 % or about 1.25 × what was measured when it was set,
-// whichever is lower; on the dense clouds the real-time model must also err well below what the
-// single-scattering frame errs against the same image (docs/design-notes.md: the fit).
+// the judge's multiple scattering, stored at 96×54 with 128 or 256 paths per pixel and each
+// pixel's standard error (tests/data/multiple_scattering/make_references.sh). rel-RMSE as the
+// content tests measure it, less the judge's own noise in quadrature (its per-pixel standard
+// errors, RMS, over its mean: 1–4 %), so the bound is on the error against the model, not against
+// one noisy estimate of it. Each bound is the 10 % or about 1.25 × what was measured when it
+// was set, whichever is lower; on the dense clouds the real-time model must also err well below what
+// the single-scattering frame errs against the same image (docs/design-notes.md: the fit).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <unistd.h>
 #include <ostream>
 #include <string>
 
 #include "media_test_support.h"
 #include "nimbus/base/settings.h"
+#include "nimbus/media/ecs/media_plugin.h"
+#include <nlohmann/json.hpp>
 
 namespace nimbus::test::media {
 namespace {
 
+using Json = nlohmann::json;
 constexpr int kWidth = 96, kHeight = 54;
 
 struct MultipleCase {
@@ -40,39 +48,95 @@ assets::RgbImage realtime(const MultipleCase& c, assets::Scattering model) {
     return session.renderRealtime(kWidth, kHeight);
 }
 
+// The judge's own noise as rel-RMSE: its per-pixel standard errors, RMS over pixels and channels,
+// over its mean luminance. An image equal to the expected value errs this much against the judge.
+double judgeNoise(const assets::RgbImage& judge, const assets::RgbImage& standardError) {
+    double squares = 0.0, mean = 0.0;
+    for (std::size_t i = 0; i < judge.pixelCount(); ++i) {
+        mean += luminance(glm::vec3(judge.rgb[3 * i], judge.rgb[3 * i + 1], judge.rgb[3 * i + 2]));
+        for (int c = 0; c < 3; ++c) squares += static_cast<double>(standardError.rgb[3 * i + c]) * standardError.rgb[3 * i + c];
+    }
+    const double n = static_cast<double>(judge.pixelCount());
+    return std::sqrt(squares / (3.0 * n)) / (mean / n);
+}
+
+// rel-RMSE against the judge less its noise (in quadrature): the error against the model itself.
+double debiased(double relRmse, double noise) { return std::sqrt(std::max(0.0, relRmse * relRmse - noise * noise)); }
+
 TEST_P(MultipleVsJudge, RelRmseWithinTheScenesBound) {
     const MultipleCase& c = GetParam();
-    const assets::RgbImage judge =
-        assets::readImage(std::filesystem::path(NIMBUS_TEST_DATA_DIR) / "multiple_scattering" / (std::string(c.scene) + ".exr"));
-    const auto multiple = nimbus::media::reference::compareImages(realtime(c, assets::Scattering::Multiple), judge);
-    EXPECT_EQ(multiple.nonfinite, 0u);
-    EXPECT_LE(multiple.relRmse, c.bound) << c.scene << " " << c.mode << " " << c.quality;
+    const std::filesystem::path folder = std::filesystem::path(NIMBUS_TEST_DATA_DIR) / "multiple_scattering";
+    const assets::RgbImage judge = assets::readImage(folder / (std::string(c.scene) + ".exr"));
+    const double noise = judgeNoise(judge, assets::readImage(folder / (std::string(c.scene) + ".stderr.exr")));
+    const auto raw = nimbus::media::reference::compareImages(realtime(c, assets::Scattering::Multiple), judge);
+    EXPECT_EQ(raw.nonfinite, 0u);
+    const double multiple = debiased(raw.relRmse, noise);
+    EXPECT_LE(multiple, c.bound) << c.scene << " " << c.mode << " " << c.quality;
     double single = 0.0;
     if (c.belowSingle > 0.0) {
-        single = nimbus::media::reference::compareImages(realtime(c, assets::Scattering::Single), judge).relRmse;
-        EXPECT_LE(multiple.relRmse, c.belowSingle * single) << c.scene << ": single scattering errs " << single;
+        single = debiased(nimbus::media::reference::compareImages(realtime(c, assets::Scattering::Single), judge).relRmse, noise);
+        EXPECT_LE(multiple, c.belowSingle * single) << c.scene << ": single scattering errs " << single;
     }
-    RecordProperty("rel_rmse", std::to_string(multiple.relRmse));
-    std::printf("[ measured ] %s %s %s rel_rmse=%.4f (bound %.3f) single=%.4f\n", c.scene, c.mode, c.quality, multiple.relRmse, c.bound, single);
+    RecordProperty("rel_rmse", std::to_string(multiple));
+    std::printf("[ measured ] %s %s %s rel_rmse=%.4f (raw %.4f, judge noise %.4f, bound %.3f) single=%.4f\n", c.scene, c.mode, c.quality,
+                multiple, raw.relRmse, noise, c.bound, single);
+}
+
+// "Model only what a scene needs": unseen_thin_haze made dark (albedo 0.02) rescatters 0.7% of
+// its first scattering's light, under the 1% at which the multiple model's grid is not read, and
+// the frame is the single program's, bit for bit; at its own albedo (34%) the grid is read.
+TEST_F(GlSceneTest, ADarkThinMediumSkipsTheMultipleTermByItsMeasure) {
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("nimbus_dark_haze_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    const std::filesystem::path source = mediaScene("unseen_thin_haze");
+    Json doc = Json::parse(std::ifstream(source));
+    for (Json& node : doc["nodes"])
+        if (node.contains("extensions") && node["extensions"].contains("NIMBUS_participating_media"))
+            node["extensions"]["NIMBUS_participating_media"]["medium"]["albedo"] = {0.02, 0.02, 0.02};
+    std::ofstream(folder / "dark_haze.gltf") << doc.dump();
+    std::filesystem::copy_file(source.parent_path() / "unseen_thin_haze.bin", folder / "unseen_thin_haze.bin");
+    struct Frame {
+        assets::RgbImage image;
+        nimbus::media::MediaFrameStats stats;
+    };
+    const auto render = [](const std::filesystem::path& scene, assets::Scattering model) {
+        sandbox::Session session({.scene = scene, .settings = {"mode=particles"}, .scattering = model});
+        Frame f{session.renderRealtime(kWidth, kHeight), {}};
+        f.stats = session.app().world().resource<nimbus::media::ecs::MediaRendererState>().renderer->stats();
+        return f;
+    };
+    const Frame dark = render(folder / "dark_haze.gltf", assets::Scattering::Multiple);
+    EXPECT_FALSE(dark.stats.multipleScattering) << "rescatters " << dark.stats.rescatter;
+    EXPECT_LT(dark.stats.rescatter, 0.01f);
+    EXPECT_GT(dark.stats.rescatter, 0.0f);
+    EXPECT_EQ(dark.image.rgb, render(folder / "dark_haze.gltf", assets::Scattering::Single).image.rgb);
+    const Frame bright = render(source, assets::Scattering::Multiple);
+    EXPECT_TRUE(bright.stats.multipleScattering);
+    EXPECT_GT(bright.stats.rescatter, 0.2f);
+    std::printf("[ measured ] rescattered share: dark haze %.4f, haze %.4f\n", dark.stats.rescatter, bright.stats.rescatter);
+    std::filesystem::remove_all(folder);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Content, MultipleVsJudge,
     ::testing::Values(
-        MultipleCase{"cumulus", 0.0, "particles", "balanced", 0.047, 0.35},  // 3.7 %, single 12.5 %
-        MultipleCase{"cumulus", 0.0, "particles", "fast", 0.07, 0.5},  // 5.5 %, single 12.9 %
-        MultipleCase{"cumulus", 0.0, "raymarch", "balanced", 0.047, 0.0},  // 3.8 %
-        MultipleCase{"cumulus", 0.0, "blocks", "balanced", 0.049, 0.0},  // 3.9 %
-        MultipleCase{"cloud", 0.0, "particles", "balanced", 0.075, 0.65},  // 6.0 %, single 10.8 %
-        // The airliner's box shadows the grid's first scattering where its wings leave gaps.
-        MultipleCase{"cumulus_aircraft", 0.0, "particles", "balanced", 0.065, 0.55},  // 5.1 %, single 11.3 %
+        MultipleCase{"cumulus", 0.0, "particles", "balanced", 0.037, 0.33},  // 2.9 %, single 10.4 %
+        MultipleCase{"cumulus", 0.0, "particles", "fast", 0.057, 0.5},  // 4.5 %, single 11.0 %
+        MultipleCase{"cumulus", 0.0, "raymarch", "balanced", 0.033, 0.0},  // 2.6 %
+        MultipleCase{"cumulus", 0.0, "blocks", "balanced", 0.033, 0.0},  // 2.6 %
+        // Cloud's thin lit shell and the airliner's box shadow are finer than the grid: 2.6× and 2.1×.
+        MultipleCase{"cloud", 0.0, "particles", "balanced", 0.045, 0.45},  // 3.6 %, single 9.4 %
+        MultipleCase{"cloud", 0.0, "raymarch", "balanced", 0.048, 0.0},  // 3.8 %
+        MultipleCase{"cumulus_aircraft", 0.0, "particles", "balanced", 0.056, 0.6},  // 4.5 %, single 9.3 %
+        MultipleCase{"steam", 8.0, "particles", "balanced", 0.072, 0.0},  // 5.8 %
+        MultipleCase{"steam", 8.0, "particles", "fast", 0.084, 0.0},  // 6.7 %
         MultipleCase{"smoke", 8.0, "particles", "balanced", 0.017, 0.0},  // 1.4 %
         MultipleCase{"smoke", 8.0, "particles", "fast", 0.027, 0.0},  // 2.2 %
         // A lamp inside the fire: its scattered light peaks within a voxel of it, which the grid smooths.
-        MultipleCase{"campfire", 4.0, "particles", "balanced", 0.094, 0.0},  // 7.5 %
-        MultipleCase{"jet", 6.0, "particles", "balanced", 0.037, 0.0},  // 3.0 %
+        MultipleCase{"campfire", 4.0, "particles", "balanced", 0.083, 0.0},  // 6.7 %
+        MultipleCase{"jet", 6.0, "particles", "balanced", 0.049, 0.0},  // 3.9 %
         MultipleCase{"explosion", 0.8, "particles", "balanced", 0.05, 0.0},  // 4.0 %
-        MultipleCase{"fog_smoke", 8.0, "particles", "balanced", 0.006, 0.0}),  // 0.5 %
+        MultipleCase{"fog_smoke", 8.0, "particles", "balanced", 0.0066, 0.0}),  // 0.5 %
     [](const ::testing::TestParamInfo<MultipleCase>& param) {
         return std::string(param.param.scene) + "_" + param.param.mode + "_" + param.param.quality;
     });

@@ -53,6 +53,18 @@ TEST_F(EditorStateTest, InvalidValuesAreRefusedWithTheLoadersMessageAndChangeNot
     }
 }
 
+TEST_F(EditorStateTest, TheOpticalModelTogglesAsOneUndoableEditAndReachesTheSession) {
+    const std::string field = "extensions.NIMBUS_participating_media.scattering";
+    ASSERT_EQ(state.session().scene().environment.scattering, assets::Scattering::Multiple);  // the default
+    state.set({{-1, field, "single"}}, "scattering");
+    EXPECT_EQ(state.session().scene().environment.scattering, assets::Scattering::Single);
+    EXPECT_EQ(getField(state.json(), -1, field), "single");
+    EXPECT_THROW(state.set({{-1, field, "double"}}, "scattering"), InputError);  // the loader's refusal
+    EXPECT_EQ(state.session().scene().environment.scattering, assets::Scattering::Single);
+    ASSERT_TRUE(state.undo());
+    EXPECT_EQ(state.session().scene().environment.scattering, assets::Scattering::Multiple);
+}
+
 TEST_F(EditorStateTest, AddUndoRedoRestoreDocumentAndSelection) {
     const Json original = state.json();
     const int added = state.add(NodeKind::Emitter, "puff", glm::dvec3(1.0, 0.0, 0.0), "steam");

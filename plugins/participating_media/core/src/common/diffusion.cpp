@@ -96,6 +96,47 @@ float halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec
 
 }  // namespace
 
+std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm::vec3>& fluence) {
+    const glm::vec3 luminance(0.2126f, 0.7152f, 0.0722f);
+    std::vector<glm::vec3> flux(m.count(), glm::vec3(0.0f));
+    const float h = static_cast<float>(m.voxel);
+    auto hasMedium = [&](const glm::ivec3& q) {
+        return glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) && glm::all(glm::lessThan(q, m.size)) &&
+               m.sigma[m.index(q.x, q.y, q.z)] * m.voxel > kEmptyDepth;
+    };
+    for (int z = 0; z < m.size.z; ++z)
+        for (int y = 0; y < m.size.y; ++y)
+            for (int x = 0; x < m.size.x; ++x) {
+                const glm::ivec3 at(x, y, z);
+                if (!hasMedium(at)) continue;
+                const std::size_t v = m.index(x, y, z);
+                const float D = glm::dot(diffusivity(m, v), luminance);
+                const float phi = glm::dot(fluence[v], luminance);
+                glm::vec3 gradient(0.0f);
+                for (int a = 0; a < 3; ++a) {
+                    glm::ivec3 step(0);
+                    step[a] = 1;
+                    // Each side: the neighbour's φ a voxel away, or 0 at the extrapolated boundary.
+                    float ahead = 0.0f, behind = 0.0f, reachAhead = 0.5f * h + kBoundary * D, reachBehind = reachAhead;
+                    if (hasMedium(at + step)) {
+                        const glm::ivec3 q = at + step;
+                        ahead = glm::dot(fluence[m.index(q.x, q.y, q.z)], luminance);
+                        reachAhead = h;
+                    }
+                    if (hasMedium(at - step)) {
+                        const glm::ivec3 q = at - step;
+                        behind = glm::dot(fluence[m.index(q.x, q.y, q.z)], luminance);
+                        reachBehind = h;
+                    }
+                    // The derivative of the parabola through the three values, at the middle one.
+                    const float up = (ahead - phi) / reachAhead, down = (phi - behind) / reachBehind;
+                    gradient[a] = (up * reachBehind + down * reachAhead) / (reachAhead + reachBehind);
+                }
+                flux[v] = -D * gradient;
+            }
+    return flux;
+}
+
 int solveDiffusion(const MediumGrid& medium, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& fluence, const DiffusionSolve& solve) {
     if (fluence.size() != medium.count()) fluence.assign(medium.count(), glm::vec3(0.0f));
     const System system = buildSystem(medium);

@@ -44,6 +44,12 @@ struct DiffusionSolve {
     const EnvironmentGrid* coarser = nullptr;  // environment_grid.h: a solve to start from, when there is no last frame's
 };
 
+// The net flux F = −D∇φ of the luminance of φ per voxel (zero where there is no medium): central
+// differences inside, one-sided to zero at the extrapolated boundary where a neighbour is empty.
+// The radiance of the diffuse light is then (φ + 3F·ω)/4π (the P1 approximation), which the
+// passes use to see forward-scattering media brighter where light leaves towards the eye.
+std::vector<glm::vec3> diffusionFlux(const MediumGrid& medium, const std::vector<glm::vec3>& fluence);
+
 // φ per voxel for first-scattering source `source` (W/m³ per channel, Q above), starting from
 // `fluence` when it has the grid's size, else from zero. Returns the sweeps run.
 int solveDiffusion(const MediumGrid& medium, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& fluence,

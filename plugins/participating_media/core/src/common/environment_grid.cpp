@@ -169,9 +169,14 @@ Arrival arrival(const Light& light, const glm::dvec3& p) {
     return a;
 }
 
-// Per voxel, the mean transmittance to the outside over the 14 lattice directions, mesh boxes dark.
-std::vector<float> environmentTransmittance(const MediumGrid& m, const std::vector<OccluderBox>& meshes) {
-    std::vector<float> mean(m.count(), 0.0f);
+// Per voxel, the mean transmittance to the outside over the 14 lattice directions, mesh boxes dark,
+// and its first moment, the mean of T·d over the same directions.
+struct EnvironmentTransmittance {
+    std::vector<float> mean;
+    std::vector<glm::vec3> moment;
+};
+EnvironmentTransmittance environmentTransmittance(const MediumGrid& m, const std::vector<OccluderBox>& meshes) {
+    EnvironmentTransmittance out{std::vector<float>(m.count(), 0.0f), std::vector<glm::vec3>(m.count(), glm::vec3(0.0f))};
     for (int z = -1; z <= 1; ++z)
         for (int y = -1; y <= 1; ++y)
             for (int x = -1; x <= 1; ++x) {
@@ -184,17 +189,32 @@ std::vector<float> environmentTransmittance(const MediumGrid& m, const std::vect
                         for (int i = 0; i < m.size.x; ++i) {
                             const std::size_t v = m.index(i, j, k);
                             if (!meshes.empty() && meetsMesh(m.min + (glm::dvec3(i, j, k) + 0.5) * m.voxel, d, meshes)) continue;
-                            mean[v] += std::exp(-tau[v]) / 14.0f;
+                            const float t = std::exp(-tau[v]) / 14.0f;
+                            out.mean[v] += t;
+                            out.moment[v] += t * glm::vec3(d);
                         }
             }
-    return mean;
+    return out;
 }
 
 // Q per voxel: σ_s times the light that arrives unscattered, from the lights and the environment
 // (4π L_amb times the mean transmittance), and the medium's own emission (fire), which the passes
-// draw unscattered and this scatters.
-std::vector<glm::vec3> firstScattering(const MediumGrid& m, const EnvironmentLighting& lighting, const std::vector<float>& environment) {
-    std::vector<glm::vec3> source(m.count(), glm::vec3(0.0f));
+// draw unscattered and this scatters. δ-Eddington scaling (Joseph, Wiscombe and Weinman): the
+// fraction f = g² of scattering in the forward peak counts as unscattered, so light reaches deeper
+// (through σ_t − f·σ_s) and the diffuse source keeps (1 − f) of it.
+std::vector<glm::vec3> firstScattering(const MediumGrid& original, const EnvironmentLighting& lighting, const std::vector<float>& environment) {
+    std::vector<glm::vec3> source(original.count(), glm::vec3(0.0f));
+    MediumGrid scaled = original;
+    std::vector<float> keep(original.count(), 1.0f);
+    for (std::size_t v = 0; v < original.count(); ++v) {
+        if (!(original.sigma[v] > 0.0f)) continue;
+        const float g = original.sigmaG[v] / original.sigma[v];
+        const float f = g * g;
+        const float sigmaS = glm::dot(original.scattering[v], glm::vec3(0.2126f, 0.7152f, 0.0722f));
+        scaled.sigma[v] = original.sigma[v] - f * sigmaS;
+        keep[v] = 1.0f - f;
+    }
+    const MediumGrid& m = scaled;
     static const std::vector<OccluderBox> kNoMeshes;
     const std::vector<OccluderBox>& meshes = lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes;
     for (int z = 0; z < m.size.z; ++z)
@@ -215,7 +235,7 @@ std::vector<glm::vec3> firstScattering(const MediumGrid& m, const EnvironmentLig
                         if (!meshes.empty() && meetsMesh(p, a.toLight, meshes, a.distance)) continue;
                         arriving += a.irradiance * static_cast<float>(std::exp(-depthAlong(m, p, a.toLight, a.distance)) * acrossVoxel);
                     }
-                source[v] = m.scattering[v] * arriving + 4.0f * static_cast<float>(kPi) * m.emission[v];  // emission: all directions
+                source[v] = keep[v] * m.scattering[v] * arriving + 4.0f * static_cast<float>(kPi) * m.emission[v];  // emission: all directions
             }
     return source;
 }
@@ -242,6 +262,31 @@ std::vector<glm::vec3> dilated(const MediumGrid& m, const std::vector<glm::vec3>
                 }
                 if (count > 0) out[v] = sum / static_cast<float>(count);
             }
+    return out;
+}
+
+// Per voxel the P1 anisotropy a of environment_grid.h (0 where the source is 0), dilated into empty
+// voxels as φ is.
+std::vector<glm::vec4> directionalTexels(const MediumGrid& m, const glm::vec3& ambient, const EnvironmentTransmittance& environment,
+                                         const std::vector<glm::vec3>& radiance, const std::vector<glm::vec3>& flux) {
+    const glm::vec3 luminance(0.2126f, 0.7152f, 0.0722f);
+    const float ambientLuminance = glm::dot(ambient, luminance);
+    const float inv4Pi = 1.0f / (4.0f * static_cast<float>(kPi));
+    std::vector<glm::vec3> a(m.count(), glm::vec3(0.0f));
+    std::vector<glm::vec3> weight(m.count(), glm::vec3(0.0f));
+    for (std::size_t v = 0; v < m.count(); ++v) {
+        const float base = ambientLuminance * environment.mean[v] + glm::dot(radiance[v], luminance) * inv4Pi;
+        if (!(base > 0.0f) || !(m.sigma[v] > 0.0f)) continue;
+        const glm::vec3 p1 = (3.0f * inv4Pi * flux[v] - 3.0f * ambientLuminance * environment.moment[v]) / base;
+        // A radiance x(1 + a·ω) is negative somewhere where |a| > 1, as P1 gives at a lit rim where the
+        // light is far from linear in direction: |a| is kept at most 1.
+        a[v] = p1 / std::max(1.0f, glm::length(p1));
+        weight[v] = glm::vec3(1.0f);
+    }
+    const std::vector<glm::vec3> spread = dilated(m, a), count = dilated(m, weight);
+    std::vector<glm::vec4> out(m.count(), glm::vec4(0.0f));
+    for (std::size_t v = 0; v < m.count(); ++v)
+        if (count[v].x > 0.0f) out[v] = glm::vec4(spread[v] / count[v].x, 0.0f);
     return out;
 }
 
@@ -337,21 +382,32 @@ MediumGrid voxelizeMedium(const ParticleSet& particles, const std::vector<Volume
 
 void buildEnvironmentGrid(const MediumGrid& medium, const EnvironmentLighting& lighting, const DiffusionSolve& solve, EnvironmentGrid& grid) {
     static const std::vector<OccluderBox> kNoMeshes;
-    const std::vector<float> environment =
-        medium.count() == 0 ? std::vector<float>{} : environmentTransmittance(medium, lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes);
-    const std::vector<glm::vec3> source = medium.count() == 0 ? std::vector<glm::vec3>{} : firstScattering(medium, lighting, environment);
+    const EnvironmentTransmittance environment = medium.count() == 0 ? EnvironmentTransmittance{}
+                                                                      : environmentTransmittance(medium, lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes);
+    const std::vector<glm::vec3> source = medium.count() == 0 ? std::vector<glm::vec3>{} : firstScattering(medium, lighting, environment.mean);
     grid.sweeps = 0;
+    grid.rescatter = 0.0f;
     grid.size = medium.size;
     grid.min = medium.min;
     grid.voxel = glm::dvec3(medium.voxel);
     grid.texels.clear();
     grid.fluence = solve.coarser != nullptr ? resampled(*solve.coarser, medium) : std::vector<glm::vec3>{};
     if (medium.count() == 0) return;
+    const float inv4Pi = 1.0f / (4.0f * static_cast<float>(kPi));
     grid.sweeps = solveDiffusion(medium, source, grid.fluence, solve);
     const std::vector<glm::vec3> radiance = dilated(medium, grid.fluence);
+    double again = 0.0, first = 0.0;  // the first scattering's light, weighted by the chance it scatters again
+    for (std::size_t v = 0; v < medium.count(); ++v)
+        if (medium.sigma[v] > 0.0f) {
+            const glm::vec3 luminance(0.2126f, 0.7152f, 0.0722f);
+            const double q = glm::dot(source[v], luminance), albedo = glm::dot(medium.scattering[v], luminance) / medium.sigma[v];
+            first += q;
+            again += q * albedo * (1.0 - environment.mean[v]);
+        }
+    grid.rescatter = first > 0.0 ? static_cast<float>(again / first) : 0.0f;
     grid.texels.resize(medium.count());
-    const float inv4Pi = 1.0f / (4.0f * static_cast<float>(kPi));
-    for (std::size_t v = 0; v < medium.count(); ++v) grid.texels[v] = glm::vec4(environment[v], radiance[v] * inv4Pi);
+    for (std::size_t v = 0; v < medium.count(); ++v) grid.texels[v] = glm::vec4(environment.mean[v], radiance[v] * inv4Pi);
+    grid.directional = directionalTexels(medium, lighting.ambient, environment, radiance, diffusionFlux(medium, grid.fluence));
 }
 
 }  // namespace nimbus::media

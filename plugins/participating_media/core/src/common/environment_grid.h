@@ -5,7 +5,15 @@
 //        directions (the 6 axes and the 8 diagonals), each direction that meets a mesh box counted
 //        dark (its light would be mesh-reflected, which the model leaves out);
 //   yzw: the radiance of light scattered two or more times, φ/4π per unit albedo, from the
-//        diffusion of what the lights and the environment scatter first (common/diffusion.h).
+//        diffusion of what the lights and the environment scatter first (common/diffusion.h),
+//        δ-Eddington scaled: the forward peak (g² of the scattering) counts as unscattered light.
+// and beside it, per voxel, how that light varies with direction (the P1 approximation):
+//   xyz: a, with the source towards ω_out for phase asymmetry g being x·max(0, 1 + g a·ω_out),
+//        x = L_amb·T̄ + φ/4π in luminance, a = (3F/4π − 3 L_amb m)/x with |a| kept ≤ 1 (so the
+//        radiance is nowhere negative), F the diffusion's net flux and m the environment
+//        transmittance's first moment over the 14 directions.
+// A forward-scattering cloud's lit face sends its diffuse light back out towards a viewer on the
+// sun's side, and its shadowed face the sky's light through it: isotropic, both were too dark.
 // Single scattering of the lights stays per particle or voxel, where the passes evaluate it exactly.
 //
 // Does not: resolve anything finer than a voxel (scattered light is the smooth part of the
@@ -26,8 +34,10 @@ struct EnvironmentGrid {
     glm::dvec3 min{0.0};   // world position of voxel 0's outer corner
     glm::dvec3 voxel{0.0}; // the same along every axis
     std::vector<glm::vec4> texels;   // per voxel, x fastest: as above
+    std::vector<glm::vec4> directional;  // per voxel: xyz a (above), w unused
     std::vector<glm::vec3> fluence;  // φ
     int sweeps = 0;                  // the diffusion solve's sweeps this frame (0: the last frame's answer kept)
+    float rescatter = 0.0f;          // ω·(1 − T̄) over the voxels, weighted by their first scattering: the share of it that scatters again
     // What the answer was solved for (solveEnvironmentGrid): a frame with the same keeps it.
     int maxSweeps = 0;  // the sweep budget (scattering_sweeps): another budget is another answer
     std::vector<double> lighting;

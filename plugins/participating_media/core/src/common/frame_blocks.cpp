@@ -15,9 +15,10 @@ FrameBlocks::FrameBlocks()
       sliceViews_(gpu::createBuffer(sizeof(GpuSliceViews), nullptr, GL_DYNAMIC_STORAGE_BIT)),
       scatteringBuffer_(gpu::createBuffer(sizeof(GpuScattering), nullptr, GL_DYNAMIC_STORAGE_BIT)) {}
 
-void FrameBlocks::packScattering(const GpuScattering& scattering, GLuint environment) {
+void FrameBlocks::packScattering(const GpuScattering& scattering, GLuint environment, GLuint directional) {
     scattering_ = scattering;
     environment_ = environment;
+    directional_ = directional;
 }
 
 void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight) {
@@ -65,6 +66,7 @@ void FrameBlocks::bind() const {
     if (environment_ == 0) return;
     glBindBufferBase(GL_UNIFORM_BUFFER, kScatteringBinding, scatteringBuffer_.id());
     glBindTextureUnit(kEnvironmentUnit, environment_);
+    glBindTextureUnit(kEnvironmentDirectionalUnit, directional_);
 }
 
 }  // namespace nimbus::media

@@ -14,8 +14,9 @@ public:
     FrameBlocks();
     // Packs now; upload() writes them (when the graph runs, after the host's previous frame).
     void pack(const HostFrame& frame, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight);
-    // The multiple-scattering model's block and environment grid (0: the frame is single scattering).
-    void packScattering(const GpuScattering& scattering, GLuint environment);
+    // The multiple-scattering model's block and environment grid with its directional part
+    // (environment 0: the frame is single scattering).
+    void packScattering(const GpuScattering& scattering, GLuint environment, GLuint directional);
     void upload() const;
     void bind() const;  // Frame, Lights, ShadowViews, MediaSliceViews (and MediaScattering) at their points
     GLuint sliceViews() const { return sliceViews_.id(); }
@@ -27,7 +28,7 @@ private:
     std::vector<glm::ivec4> perLight_;
     std::vector<gpu::GpuLightView> views_;
     GpuScattering scattering_{};
-    GLuint environment_ = 0;
+    GLuint environment_ = 0, directional_ = 0;
     gpu::Buffer frameBuffer_, lightsBuffer_, shadowViewsBuffer_, sliceViews_, scatteringBuffer_;
 };
 

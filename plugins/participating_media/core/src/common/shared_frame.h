@@ -39,6 +39,7 @@ struct SharedFrame {
     int sliceResolution = 0;            // texels per side of every slice
     EnvironmentGrid environment;        // multiple scattering: this frame's (empty: single)
     gpu::Texture environmentTexture;    // its GPU copy, RGBA32F, linear
+    gpu::Texture directionalTexture;    // its directional part, RGBA32F, linear
 };
 
 }  // namespace nimbus::media

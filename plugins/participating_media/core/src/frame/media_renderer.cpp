@@ -15,6 +15,10 @@
 
 namespace nimbus::media {
 
+namespace {
+constexpr float kNegligibleRescatter = 0.01f;  // planScattering
+}  // namespace
+
 double MediaFrameStats::value(const std::string& key, double fallback) const {
     for (const TechniqueStat& s : technique)
         if (s.key == key) return std::visit([](auto v) { return static_cast<double>(v); }, s.value);
@@ -74,9 +78,12 @@ void MediaRenderer::addUploadPass(gpu::FrameGraph& graph, GraphFrame& context) {
             shared_->buffer->upload(*particles_, context.host.camera.origin);
             if (!volumes_->empty()) shared_->volumes->upload(*volumes_, context.host.camera.origin);
             const EnvironmentGrid& grid = shared_->environment;
-            if (!grid.empty())
+            if (!grid.empty()) {
                 glTextureSubImage3D(shared_->environmentTexture.id(), 0, 0, 0, 0, grid.size.x, grid.size.y, grid.size.z, GL_RGBA, GL_FLOAT,
                                     grid.texels.data());
+                glTextureSubImage3D(shared_->directionalTexture.id(), 0, 0, 0, 0, grid.size.x, grid.size.y, grid.size.z, GL_RGBA, GL_FLOAT,
+                                    grid.directional.data());
+            }
             technique_->upload(frame_, context);
         });
 }
@@ -158,29 +165,41 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
 }
 
 // The multiple model's environment grid, packed with the approximation's constants; a single frame
-// packs none, and its programs read none.
+// packs none, and its programs read none. Nor does a multiple frame whose medium rescatters almost
+// nothing: where under 1% of the first scattering's light scatters again (ω·(1 − T̄) per voxel, T̄
+// its mean transmittance to the outside, weighted by that light), orders ≥ 2 add about that share
+// and the environment is about as little attenuated, so the single programs draw it.
 void MediaRenderer::planScattering(GraphFrame& context) {
     SharedFrame& shared = *shared_;
     const bool multiple = context.host.scattering == ScatteringModel::Multiple && techniques_.at(settings_.mode).multipleScattering;
     context.multiple = multiple;
     if (!multiple) {
         shared.environment = {};
-        shared.blocks->packScattering({}, 0);
+        shared.blocks->packScattering({}, 0, 0);
         return;
     }
     solveEnvironmentGrid(*particles_, *volumes_, {.lights = &context.host.lights, .ambient = context.host.ambient, .meshes = &context.host.occluders},
                          settings_.scatteringVoxels, {.maxSweeps = settings_.scatteringSweeps}, shared.environment);
     const EnvironmentGrid& grid = shared.environment;
-    gpu::Texture& texture = shared.environmentTexture;
-    if (!texture || texture.desc().width != grid.size.x || texture.desc().height != grid.size.y || texture.desc().depth != grid.size.z) {
-        texture = gpu::Texture({.target = GL_TEXTURE_3D, .format = GL_RGBA32F, .width = grid.size.x, .height = grid.size.y, .depth = grid.size.z});
-        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(texture.id(), wrap, GL_CLAMP_TO_EDGE);
+    for (gpu::Texture* texture : {&shared.environmentTexture, &shared.directionalTexture}) {
+        if (*texture && texture->desc().width == grid.size.x && texture->desc().height == grid.size.y && texture->desc().depth == grid.size.z)
+            continue;
+        *texture = gpu::Texture({.target = GL_TEXTURE_3D, .format = GL_RGBA32F, .width = grid.size.x, .height = grid.size.y, .depth = grid.size.z});
+        for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R}) glTextureParameteri(texture->id(), wrap, GL_CLAMP_TO_EDGE);
     }
+    // The textures above are sized for the grid either way: the upload pass fills them.
+    stats_.rescatter = grid.rescatter;
+    if (grid.rescatter < kNegligibleRescatter) {  // thin or dark: the single model's programs, within that much
+        context.multiple = false;
+        shared.blocks->packScattering({}, 0, 0);
+        return;
+    }
+    stats_.multipleScattering = true;
     const glm::dvec3 extent = glm::dvec3(grid.size) * grid.voxel;
     GpuScattering block;
     block.gridMin = glm::vec4(glm::vec3(grid.min - context.host.camera.origin), 1.0f);
     block.gridInvExtent = glm::vec4(glm::vec3(1.0 / extent), 0.0f);
-    shared.blocks->packScattering(block, texture.id());
+    shared.blocks->packScattering(block, shared.environmentTexture.id(), shared.directionalTexture.id());
 }
 
 GLuint MediaRenderer::sliceViewsBlock() const { return shared_->blocks ? shared_->blocks->sliceViews() : 0; }

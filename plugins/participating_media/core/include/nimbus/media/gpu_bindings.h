@@ -34,6 +34,7 @@ inline constexpr GLuint kSeamMaskUnit = 9;        // MEDIA_SEAM_MASK_UNIT
 inline constexpr GLuint kVoxelScatteringUnit = 5; // MEDIA_VOXEL_SCATTERING_UNIT (raymarch: never with the impostors)
 inline constexpr GLuint kVoxelEmissionUnit = 7;   // MEDIA_VOXEL_EMISSION_UNIT
 inline constexpr GLuint kEnvironmentUnit = 10;    // MEDIA_ENVIRONMENT_UNIT (multiple scattering)
+inline constexpr GLuint kEnvironmentDirectionalUnit = 12;  // MEDIA_ENVIRONMENT_DIRECTIONAL_UNIT (its P1 anisotropy)
 inline constexpr GLuint kNoiseGridUnit = 11;      // MEDIA_NOISE_GRID_UNIT (volume slices: the noise volumes' σ_t on a grid)
 // Image units.
 inline constexpr GLuint kGridScatteringImage = 0;  // raymarch_noise.comp: the raymarch grid's rgb σ_s, a σ_t

@@ -36,6 +36,8 @@ struct MediaFrameStats {
     int sliceViews = 0;        // light views that got slices
     float mediaScale = 1.0f;   // the media target's resolution relative to the frame, this frame
     std::string mode;          // the technique that drew the frame
+    bool multipleScattering = false;  // the multiple model's grid was read (not: single, or negligible)
+    float rescatter = 0.0f;    // the multiple model: the share of first-scattered light that scatters again ("negligible" below 1%)
     std::vector<TechniqueStat> technique;  // what it reported (TechniqueStat)
     // A technique's figure as a number (a bool as 0 or 1); `fallback` when it reported none.
     double value(const std::string& key, double fallback = 0.0) const;
