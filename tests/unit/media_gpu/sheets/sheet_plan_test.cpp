@@ -16,8 +16,9 @@ const std::vector<float> kDepths = {9.0f, 8.5f, 7.2f, 7.0f, 6.1f, 5.0f, 4.4f, 3.
 constexpr float kRadius = 0.5f;
 
 TEST(SheetPlan, TheSpacingIsTheMedianRadiusTimesTheTiersFactor) {
-    EXPECT_DOUBLE_EQ(sheetSpacingFor({0.1f, 2.0f, 0.4f, 0.3f, 0.2f}, 0.5), 0.5 * 0.3f);
-    EXPECT_DOUBLE_EQ(sheetSpacingFor({1.0f}, 0.25), 0.25);
+    std::vector<float> scratch;
+    EXPECT_DOUBLE_EQ(sheetSpacingFor({0.1f, 2.0f, 0.4f, 0.3f, 0.2f}, 0.5, scratch), 0.5 * 0.3f);
+    EXPECT_DOUBLE_EQ(sheetSpacingFor({1.0f}, 0.25, scratch), 0.25);
 }
 
 TEST(SheetPlan, SheetsSpanTheMediumBackToFrontAtTheSpacing) {
@@ -30,7 +31,9 @@ TEST(SheetPlan, SheetsSpanTheMediumBackToFrontAtTheSpacing) {
     for (std::size_t k = 0; k < plan.sheets.size(); ++k) {
         const Sheet& s = plan.sheets[k];
         EXPECT_NEAR(s.farDepth - s.nearDepth, 0.5f, 1e-5f);
-        if (k > 0) EXPECT_LE(s.farDepth, plan.sheets[k - 1].nearDepth + 1e-5f) << "back to front";
+        if (k > 0) {
+            EXPECT_LE(s.farDepth, plan.sheets[k - 1].nearDepth + 1e-5f) << "back to front";
+        }
         // Exactly the particles whose sphere overlaps the sheet (all of radius kRadius here).
         for (std::uint32_t r = 0; r < kDepths.size(); ++r) {
             const bool overlaps = kDepths[r] + kRadius > s.nearDepth && kDepths[r] - kRadius < s.farDepth;

@@ -6,11 +6,11 @@
 
 namespace nimbus::media {
 
-double sheetSpacingFor(const std::vector<float>& radii, double perRadius) {
+double sheetSpacingFor(const std::vector<float>& radii, double perRadius, std::vector<float>& scratch) {
     if (radii.empty()) return perRadius;
-    std::vector<float> sorted = radii;
-    auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-    std::nth_element(sorted.begin(), middle, sorted.end());
+    scratch.assign(radii.begin(), radii.end());
+    auto middle = scratch.begin() + static_cast<std::ptrdiff_t>(scratch.size() / 2);
+    std::nth_element(scratch.begin(), middle, scratch.end());
     return perRadius * static_cast<double>(*middle);
 }
 

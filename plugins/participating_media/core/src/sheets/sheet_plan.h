@@ -24,7 +24,8 @@ struct SheetPlan {
 };
 
 // The spacing from the particle size: `perRadius` times the median radius (positive radii).
-double sheetSpacingFor(const std::vector<float>& radii, double perRadius);
+// `scratch` is reused between calls (steady frames allocate nothing).
+double sheetSpacingFor(const std::vector<float>& radii, double perRadius, std::vector<float>& scratch);
 
 // `rankDepths`: the centres' view depths in draw order (non-increasing), `maxRadius` the largest
 // radius, [mediumNear, mediumFar] the view depths the medium spans, `znear` the camera's near

@@ -49,7 +49,7 @@ public:
         shared.buffer->sortByViewDepth(*frame.particles, view);
         shared.buffer->uploadLampNeighbourhoods(*frame.particles, context.host.lights);
         const SheetsSettings own = techniqueSettings<SheetsSettings>(*frame.settings);
-        const double spacing = own.spacing > 0.0f ? own.spacing : sheetSpacingFor(frame.particles->radius, own.spacingPerRadius);
+        const double spacing = own.spacing > 0.0f ? own.spacing : sheetSpacingFor(frame.particles->radius, own.spacingPerRadius, radii_);
         const DepthSpan span = depthSpan(*frame.particles, view);
         plan_ = planSheets(shared.buffer->rankDepths(), span.maxRadius, span.nearDepth, span.farDepth, view.znear, spacing);
         frame.report("sheets", static_cast<long long>(plan_.sheets.size()));
@@ -77,6 +77,7 @@ public:
 
 private:
     SheetPlan plan_;
+    std::vector<float> radii_;  // sheetSpacingFor's scratch
     ParticleSlices slices_;
     std::unique_ptr<ParticleLightingPass> lightingPass_;
     std::unique_ptr<SheetPass> sheetPass_;
