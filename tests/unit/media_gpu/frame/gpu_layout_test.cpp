@@ -137,6 +137,10 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(samplerUnit(sheetSplats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));
     EXPECT_EQ(samplerUnit(sheetSplats.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
     EXPECT_EQ(storageBinding(sheetSplats.id(), "ParticleLight"), static_cast<GLint>(kParticleLightBinding));
+    const gpu::Program sheetExact = gpu::compileProgram(LocalLightPrograms::withLocalLights(sheetExactDesc()));
+    EXPECT_EQ(samplerUnit(sheetExact.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
+    EXPECT_EQ(samplerUnit(sheetExact.id(), "mediaSlices"), static_cast<GLint>(kSlicesUnit));
+    EXPECT_EQ(storageBinding(sheetExact.id(), "LampNeighbourhoods"), static_cast<GLint>(kLampNeighbourhoodBinding));
     const gpu::Program sheetComposite = gpu::compileProgram(sheetCompositeDesc());
     EXPECT_EQ(samplerUnit(sheetComposite.id(), "uSheet"), static_cast<GLint>(kSheetUnit));
     const gpu::Program raymarch = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/raymarch/raymarch.frag"});

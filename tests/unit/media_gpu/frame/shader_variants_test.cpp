@@ -72,6 +72,7 @@ TEST_F(ShaderVariants, SheetSplats) {
     std::vector<gpu::ProgramDesc> descs{sheetCompositeDesc()};
     for (bool lamps : {false, true})
         for (bool constant : {false, true}) descs.push_back(sheetSplatDesc(lamps, constant));
+    addBothLightings(descs, sheetExactDesc());
     expectCompiles(descs);
 }
 

@@ -12,9 +12,9 @@
 namespace nimbus::media {
 
 namespace {
-constexpr GLint kFullResScaleLocation = 1;   // sheet_splats.frag uFullResScale
-constexpr GLint kSheetLocation = 2;          // sheet_splats.* uSheet
-constexpr GLint kFirstRankLocation = 3;      // sheet_splats.vert uFirstRank
+constexpr GLint kFullResScaleLocation = 1;   // sheet_splats.frag, sheet_exact.frag uFullResScale
+constexpr GLint kSheetLocation = 2;          // sheet_splats.*, sheet_exact.* uSheet
+constexpr GLint kFirstRankLocation = 3;      // sheet_splats.vert, sheet_exact.vert uFirstRank
 constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
 constexpr gpu::PipelineState kSheetSum = gpu::PipelineState::blending(gpu::kAdditive);
@@ -29,6 +29,10 @@ gpu::ProgramDesc sheetSplatDesc(bool lamps, bool constant) {
     return desc;
 }
 
+gpu::ProgramDesc sheetExactDesc() {
+    return {.vertex = "media/sheets/sheet_exact.vert", .fragment = "media/sheets/sheet_exact.frag", .defines = {"MEDIA_LAYER_LIGHT"}};
+}
+
 gpu::ProgramDesc sheetCompositeDesc() { return {.vertex = "fullscreen.vert", .fragment = "media/sheets/sheet_composite.frag"}; }
 
 const gpu::Program& SheetPass::splatProgram(bool lamps, bool constant) {
@@ -38,9 +42,14 @@ const gpu::Program& SheetPass::splatProgram(bool lamps, bool constant) {
 }
 
 gpu::ResourceHandle SheetPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
-                                   const ParticleLightingPass& lighting, const SheetPlan& plan, bool constant,
+                                   const ParticleLightingPass* lighting, const SheetPlan& plan, bool constant,
                                    const FragmentLamps& lamps, const MediaTarget& target) {
-    const gpu::Program& splats = splatProgram(lamps.lamps[0] >= 0, constant);
+    const bool perFragment = lighting == nullptr;
+    if (perFragment && !exact_) exact_ = std::make_unique<LocalLightPrograms>(sheetExactDesc());
+    const gpu::Program& slabs =
+        perFragment ? exact_->forLights(context.host.lights, context.multiple) : splatProgram(lamps.lamps[0] >= 0, constant);
+    // The splats read the slices and the shadow map only for their per-fragment lamps.
+    const bool lit = perFragment || lamps.lamps[0] >= 0;
     struct Data {
         gpu::ResourceHandle media, sheet, depth, slices, shadowMap;
     };
@@ -51,11 +60,11 @@ gpu::ResourceHandle SheetPass::add(gpu::FrameGraph& graph, GraphFrame& context, 
             d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, size.x, size.y, 1, 1});
             d.sheet = builder.create("media_sheet", {GL_TEXTURE_2D, GL_RGBA32F, size.x, size.y, 1, 1});
             d.depth = builder.read(context.sceneDepth);
-            if (lamps.lamps[0] >= 0 && context.slices.valid()) d.slices = builder.read(context.slices);
-            if (lamps.lamps[0] >= 0 && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            if (lit && context.slices.valid()) d.slices = builder.read(context.slices);
+            if (lit && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
         },
-        [this, &splats, &context, &buffer, &lighting, &plan, lamps, size, scale = target.fullResScale](const gpu::PassResources& resources,
-                                                                                                   const Data& d) {
+        [this, &slabs, &context, &buffer, lighting, &plan, lamps, size, scale = target.fullResScale](const gpu::PassResources& resources,
+                                                                                                 const Data& d) {
             const gpu::Framebuffer media = bindClearedMediaTarget(resources.id(d.media), size);
             const gpu::Framebuffer sheet = gpu::createFramebuffer();
             glNamedFramebufferTexture(sheet.id(), GL_COLOR_ATTACHMENT0, resources.id(d.sheet), 0);
@@ -63,22 +72,26 @@ gpu::ResourceHandle SheetPass::add(gpu::FrameGraph& graph, GraphFrame& context, 
             context.blocks->bind();
             buffer.bindParticles();
             buffer.bindOrder();
-            lighting.bind();
             glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
-            glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
-            glProgramUniform2f(splats.id(), kFullResScaleLocation, scale.x, scale.y);
-            glProgramUniform1i(splats.id(), kFragmentSunLocation, lamps.sun);
-            if (lamps.lamps[0] >= 0) glProgramUniform1iv(splats.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
+            glProgramUniform2f(slabs.id(), kFullResScaleLocation, scale.x, scale.y);
+            if (lighting != nullptr) {
+                lighting->bind();
+                glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
+                glProgramUniform1i(slabs.id(), kFragmentSunLocation, lamps.sun);
+                if (lamps.lamps[0] >= 0) glProgramUniform1iv(slabs.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
+            } else {
+                buffer.bindLampNeighbourhoods();
+            }
             glBindVertexArray(vertexArray_.id());
             const float empty[4] = {0.0f, 0.0f, 0.0f, 0.0f};
             for (const Sheet& s : plan.sheets) {
                 glClearNamedFramebufferfv(sheet.id(), GL_COLOR, 0, empty);
                 glBindFramebuffer(GL_FRAMEBUFFER, sheet.id());
-                glUseProgram(splats.id());
-                glProgramUniform2f(splats.id(), kSheetLocation, s.nearDepth, s.farDepth);
-                glProgramUniform1i(splats.id(), kFirstRankLocation, static_cast<GLint>(s.firstRank));
+                glUseProgram(slabs.id());
+                glProgramUniform2f(slabs.id(), kSheetLocation, s.nearDepth, s.farDepth);
+                glProgramUniform1i(slabs.id(), kFirstRankLocation, static_cast<GLint>(s.firstRank));
                 gpu::applyPipeline(kSheetSum);
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(s.ranks));
                 glBindFramebuffer(GL_FRAMEBUFFER, media.id());
@@ -86,7 +99,7 @@ gpu::ResourceHandle SheetPass::add(gpu::FrameGraph& graph, GraphFrame& context, 
                 glBindTextureUnit(kSheetUnit, resources.id(d.sheet));
                 gpu::applyPipeline(kMediaOver);
                 glDrawArrays(GL_TRIANGLES, 0, 3);
-                glBindTextureUnit(kSheetUnit, 0);  // the next sheet's splats render into it
+                glBindTextureUnit(kSheetUnit, 0);  // the next sheet's slabs render into it
             }
         });
     return data.media;

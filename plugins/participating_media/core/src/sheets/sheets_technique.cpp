@@ -20,8 +20,15 @@ const SettingField<SheetsSettings> kSheetsFields[] = {
       .type = SettingType::Number,
       .min = 0.001,
       .max = 1000.0,
-      .defaultValue = "a quarter of the median particle radius (balanced: a half, fast: one radius), at most 256 sheets"},
+      .defaultValue = "half the median particle radius (fast: one radius), at most 256 sheets"},
      &setNumber<&SheetsSettings::spacing>},
+    {{.key = "sheet_lighting",
+      .help = "where the slabs are lit: per fragment over each slab (exact), per particle fitted across its billboard, or per "
+              "particle with each of its rays shaded as a fragment",
+      .type = SettingType::Choice,
+      .words = {"fragment", "particle", "particle_exact"},
+      .defaultValue = "fragment (balanced: particle_exact, fast: particle)"},
+     &setChoice<&SheetsSettings::lighting>},
 };
 
 // The view depths the particles' spheres span, and the largest radius.
@@ -63,16 +70,22 @@ public:
 
     gpu::ResourceHandle addMedia(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) override {
         const SheetsSettings own = techniqueSettings<SheetsSettings>(*frame.settings);
-        if (!lightingPass_) lightingPass_ = std::make_unique<ParticleLightingPass>();
         if (!sheetPass_) sheetPass_ = std::make_unique<SheetPass>();
         const SharedFrame& shared = *frame.shared;
-        const gpu::View& v = context.host.camera;
         const FragmentLamps lamps = fragmentLamps(context.host.lights);
+        frame.report("exact_lighting", own.lighting == SheetLighting::Fragment);
+        if (own.lighting == SheetLighting::Fragment) {
+            frame.report("constant_source", false);
+            return sheetPass_->add(graph, context, *shared.buffer, nullptr, plan_, false, lamps, shared.target);
+        }
+        if (!lightingPass_) lightingPass_ = std::make_unique<ParticleLightingPass>();
+        const gpu::View& v = context.host.camera;
         // As in `particles`: billboards of a few pixels have nothing for a fit to follow.
         const bool constant = shared.coverage * v.width * v.height < kConstantSplatPixels * static_cast<double>(frame.particles->size());
         frame.report("constant_source", constant);
-        lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(), own.exactLighting, constant, lamps);
-        return sheetPass_->add(graph, context, *shared.buffer, *lightingPass_, plan_, constant, lamps, shared.target);
+        lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(), own.lighting == SheetLighting::ParticleExact, constant,
+                           lamps);
+        return sheetPass_->add(graph, context, *shared.buffer, lightingPass_.get(), plan_, constant, lamps, shared.target);
     }
 
 private:
@@ -87,10 +100,10 @@ private:
 
 SheetsSettings SheetsSettings::forTier(QualityTier tier) {
     SheetsSettings s;
-    if (tier == QualityTier::Balanced) s.spacingPerRadius = 0.5f;
+    if (tier == QualityTier::Balanced) s.lighting = SheetLighting::ParticleExact;
     if (tier == QualityTier::Fast) {
         s.spacingPerRadius = 1.0f;
-        s.exactLighting = false;
+        s.lighting = SheetLighting::Particle;
     }
     return s;
 }
