@@ -20,6 +20,7 @@
 #define MEDIA_VOXEL_EMISSION_UNIT 7    // raymarch: rgb σ_t·emission, a σ_t·g
 #define MEDIA_SLABS_UNIT 0
 #define MEDIA_HOST_DEPTH_UNIT 0       // a standard-Z host depth, re-encoded by media_host_depth
+#define MEDIA_SHEET_UNIT 0            // sheets: one sheet's sums (sheet_composite.frag)
 #define MEDIA_ENVIRONMENT_UNIT 10     // multiple scattering: the environment grid (sampler3D)
 #define MEDIA_ENVIRONMENT_DIRECTIONAL_UNIT 12  // multiple scattering: the grid's P1 anisotropy (sampler3D)
 #define MEDIA_NOISE_GRID_UNIT 11      // volume slices: the noise volumes' σ_t on the raymarch grid (sampler3D)

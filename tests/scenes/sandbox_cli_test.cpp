@@ -225,7 +225,9 @@ TEST(SandboxRender, RefusesBadArgumentsWithAReason) {
         EXPECT_NE(r.err.find(c.mentions), std::string::npos) << explain(r);
         ASSERT_EQ(r.errLines().size(), 1u) << explain(r);
         EXPECT_EQ(r.err.rfind("sandbox: ", 0), 0u) << explain(r);
-        if (c.parseError) EXPECT_NE(r.err.find("--help"), std::string::npos) << "points to the usage: " << explain(r);
+        if (c.parseError) {
+            EXPECT_NE(r.err.find("--help"), std::string::npos) << "points to the usage: " << explain(r);
+        }
         EXPECT_TRUE(r.out.empty()) << "nothing on stdout: " << r.out;
     }
 }
@@ -285,7 +287,7 @@ TEST(SandboxSettings, ListsEverySettingWithWhereItActs) {
     const ProcessResult r = sandbox({"settings"});
     ASSERT_EQ(r.exitCode, 0) << explain(r);
     for (const char* key : {"quality", "mode", "lighting", "slice_deposit", "media_scale", "shadow_map_size", "in mode blocks",
-                            "tier exact", "(fast: 16)", "particles, blocks, raymarch or billboards"})
+                            "tier exact", "(fast: 16)", "particles, blocks, raymarch, sheets or billboards"})
         EXPECT_NE(r.out.find(key), std::string::npos) << key << " missing from:\n" << r.out;
 }
 

@@ -12,6 +12,7 @@ unseen_*     scenes the renderer was not tuned on (tests/scenes/media/unseen_sce
 absorber     albedo 0, no emission, no ambient, white background (absorber_test.cpp).
 moving_shadow  a uniform slab of particles under a box that the test moves (moving_shadow_test.cpp).
 shadow_edge  one large particle half under a plate (shadow_edge_test.cpp).
+colour_pairs  pairs of differently coloured particles whose depth order flips as the camera orbits (sheets_test.cpp).
 """
 import math
 import os
@@ -343,6 +344,29 @@ def shadow_edge():
     return b
 
 
+# Shared with sheets_test.cpp: the camera looks at this point and orbits about the y axis through it.
+POP_TARGET = (0.0, 0.0, 0.0)
+
+
+def colour_pairs():
+    """Pairs of dense, differently coloured particles side by side (0.25 m apart along x, at one
+    depth), each colour its own node, 2.5 m in front of the orbit's pivot so that they sweep across
+    the image as the camera orbits. Their depth order flips where the eye crosses the plane between
+    a pair: at 0 and about +-0.95 degrees (sheets_test.cpp)."""
+    b = Builder()
+    b.environment([0.3, 0.3, 0.35], [0.05, 0.05, 0.05])
+    radius, sigma, depth = 0.45, 8.0, 2.5  # optical depth about 3 through a centre
+    pairs = ((-0.1, -0.75, ((1.0, 0.15, 0.1), (0.1, 0.9, 0.2))), (0.0, 0.0, ((0.15, 0.3, 1.0), (1.0, 0.9, 0.1))),
+             (0.1, 0.75, ((0.9, 0.1, 0.9), (0.1, 0.9, 0.9))))
+    for n, (mid, y, colours) in enumerate(pairs):
+        for side, colour in zip((-0.125, 0.125), colours):
+            b.node("pair%d_%s" % (n, "left" if side < 0 else "right"),
+                   ext={"medium": medium(sigma, colour, 0.0), "particles": b.particles([[mid + side, y, depth]], [radius])})
+    b.sun("sun", direction=(-0.3, -0.6, -0.75), intensity=3.0)
+    b.camera("main", eye=(0.0, 0.0, 6.0), target=POP_TARGET, yfov=0.55)
+    return b
+
+
 SCENES = {
     "unseen_thin_haze": unseen_thin_haze,
     "unseen_thick_cumulus": unseen_thick_cumulus,
@@ -365,6 +389,7 @@ SCENES = {
     "absorber": absorber,
     "moving_shadow": moving_shadow,
     "shadow_edge": shadow_edge,
+    "colour_pairs": colour_pairs,
 }
 
 if __name__ == "__main__":

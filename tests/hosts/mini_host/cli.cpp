@@ -52,7 +52,7 @@ void parseMediaScale(const std::string& text, Options& o) {
 }  // namespace
 
 const char* usage() {
-    return "usage: mini_host SCENE.gltf --out F.exr [--size WxH] [--time T] [--media-out M.exr] [--mode particles|blocks|billboards] "
+    return "usage: mini_host SCENE.gltf --out F.exr [--size WxH] [--time T] [--media-out M.exr] [--mode particles|blocks|raymarch|sheets|billboards] "
            "[--media-scale S] [--depth reversed|standard]";
 }
 

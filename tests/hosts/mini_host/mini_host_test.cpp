@@ -70,6 +70,7 @@ struct Mode {
 const Mode kModes[] = {{"particles", {}, {}},
                        {"blocks", {"--mode", "blocks"}, {"--mode", "blocks"}},
                        {"billboards", {"--mode", "billboards"}, {"--mode", "billboards"}},
+                       {"sheets", {"--mode", "sheets"}, {"--mode", "sheets"}},
                        {"half", {"--media-scale", "0.5"}, {"--set", "media_scale=0.5"}}};
 
 class MiniHostMatchesSandbox : public ::testing::TestWithParam<Case> {};

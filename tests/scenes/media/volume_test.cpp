@@ -121,7 +121,7 @@ TEST_F(VolumeScenes, NoiseDriftsWithItsVelocity) {
 // A mode that does not draw volumes refuses the scene in one line naming the file, the node and the
 // field, and the modes that do.
 TEST_F(VolumeScenes, ParticleModesRefuseAVolumeNamingItsNode) {
-    for (const char* mode : {"particles", "blocks", "billboards"}) {
+    for (const char* mode : {"particles", "blocks", "sheets", "billboards"}) {
         SCOPED_TRACE(mode);
         sandbox::Session session({.scene = volumeScene("absorber_box"), .settings = {std::string("mode=") + mode}});
         try {

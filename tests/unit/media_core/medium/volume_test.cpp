@@ -80,7 +80,9 @@ TEST(Volume, NoiseExtinctionIsAtMostSigmaAndZeroOutside) {
         const double s = volumeExtinction(v, x);
         EXPECT_GE(s, 0.0);
         EXPECT_LE(s, 3.0);
-        if (!volumeContains(v, x)) EXPECT_EQ(s, 0.0);
+        if (!volumeContains(v, x)) {
+            EXPECT_EQ(s, 0.0);
+        }
         most = std::max(most, s);
     }
     EXPECT_GT(most, 0.5);

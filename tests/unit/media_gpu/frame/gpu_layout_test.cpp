@@ -10,6 +10,7 @@
 #include "particles/particle_lighting_pass.h"
 #include "particles/particle_pass.h"
 #include "particles/particle_splat_pass.h"
+#include "sheets/sheet_pass.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/media/gpu_bindings.h"
 #include "common/particle_buffer.h"
@@ -132,6 +133,16 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
 
     const gpu::Program splats = gpu::compileProgram(particleSplatDesc(false, true, false));
     EXPECT_EQ(samplerUnit(splats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));
+    const gpu::Program sheetSplats = gpu::compileProgram(sheetSplatDesc(true, false));
+    EXPECT_EQ(samplerUnit(sheetSplats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));
+    EXPECT_EQ(samplerUnit(sheetSplats.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
+    EXPECT_EQ(storageBinding(sheetSplats.id(), "ParticleLight"), static_cast<GLint>(kParticleLightBinding));
+    const gpu::Program sheetExact = gpu::compileProgram(LocalLightPrograms::withLocalLights(sheetExactDesc()));
+    EXPECT_EQ(samplerUnit(sheetExact.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
+    EXPECT_EQ(samplerUnit(sheetExact.id(), "mediaSlices"), static_cast<GLint>(kSlicesUnit));
+    EXPECT_EQ(storageBinding(sheetExact.id(), "LampNeighbourhoods"), static_cast<GLint>(kLampNeighbourhoodBinding));
+    const gpu::Program sheetComposite = gpu::compileProgram(sheetCompositeDesc());
+    EXPECT_EQ(samplerUnit(sheetComposite.id(), "uSheet"), static_cast<GLint>(kSheetUnit));
     const gpu::Program raymarch = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/raymarch/raymarch.frag"});
     EXPECT_EQ(samplerUnit(raymarch.id(), "uScattering"), static_cast<GLint>(kVoxelScatteringUnit));
     EXPECT_EQ(samplerUnit(raymarch.id(), "uEmission"), static_cast<GLint>(kVoxelEmissionUnit));

@@ -11,6 +11,7 @@
 #include "particles/particle_lighting_pass.h"
 #include "particles/particle_pass.h"
 #include "particles/particle_splat_pass.h"
+#include "sheets/sheet_pass.h"
 #include "nimbus/base/error.h"
 
 namespace nimbus::media {
@@ -64,6 +65,14 @@ TEST_F(ShaderVariants, ParticleSplats) {
     for (bool eyeInside : {false, true})
         for (bool lamps : {false, true})
             for (bool constant : {false, true}) descs.push_back(particleSplatDesc(eyeInside, lamps, constant));
+    expectCompiles(descs);
+}
+
+TEST_F(ShaderVariants, SheetSplats) {
+    std::vector<gpu::ProgramDesc> descs{sheetCompositeDesc()};
+    for (bool lamps : {false, true})
+        for (bool constant : {false, true}) descs.push_back(sheetSplatDesc(lamps, constant));
+    addBothLightings(descs, sheetExactDesc());
     expectCompiles(descs);
 }
 

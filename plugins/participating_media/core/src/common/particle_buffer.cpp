@@ -89,6 +89,17 @@ void ParticleGpuBuffer::sortBackToFront(const ParticleSet& p, const gpu::View& v
         glNamedBufferSubData(order_.id(), 0, static_cast<GLsizeiptr>(order_cpu_.size() * sizeof(std::uint32_t)), order_cpu_.data());
 }
 
+void ParticleGpuBuffer::sortByViewDepth(const ParticleSet& p, const gpu::View& view) {
+    keys_.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) keys_[i] = static_cast<float>(glm::dot(p.position[i] - view.origin, view.forward));
+    sortDescending(keys_, order_cpu_, sortScratch_);
+    rankDepths_.resize(order_cpu_.size());
+    for (std::size_t r = 0; r < order_cpu_.size(); ++r) rankDepths_[r] = keys_[order_cpu_[r]];
+    ensureCapacity(order_, orderCapacity_, std::max<std::size_t>(order_cpu_.size(), 1) * sizeof(std::uint32_t));
+    if (!order_cpu_.empty())
+        glNamedBufferSubData(order_.id(), 0, static_cast<GLsizeiptr>(order_cpu_.size() * sizeof(std::uint32_t)), order_cpu_.data());
+}
+
 void ParticleGpuBuffer::uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<Light>& lights) {
     rank_.assign(particles.size(), 0u);
     for (std::size_t r = 0; r < order_cpu_.size() && r < rank_.size(); ++r) rank_[order_cpu_[r]] = static_cast<std::uint32_t>(r);

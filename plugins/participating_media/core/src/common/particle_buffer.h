@@ -39,6 +39,11 @@ public:
     // Sorts by the distance from the eye to where each particle's light is seen (visibleDepthOffset
     // in front of its centre), farthest first, and uploads the order.
     void sortBackToFront(const ParticleSet& particles, const gpu::View& view);
+    // Sorts by the centres' depth along the view axis, farthest first (sheets mode: the particles
+    // that reach into a sheet are one run of ranks), and uploads the order.
+    void sortByViewDepth(const ParticleSet& particles, const gpu::View& view);
+    // After sortByViewDepth: the view depth of the particle at each rank (non-increasing).
+    const std::vector<float>& rankDepths() const { return rankDepths_; }
 
     // After sorting: the particles around each point/spot light, with their draw ranks (particles mode).
     void uploadLampNeighbourhoods(const ParticleSet& particles, const std::vector<Light>& lights);
@@ -57,6 +62,7 @@ private:
     std::vector<GpuParticle> staging_;
     std::vector<std::uint32_t> order_cpu_;
     std::vector<float> keys_;
+    std::vector<float> rankDepths_;
     std::vector<std::uint32_t> sortScratch_;
     // visibleDepthOffset per particle and the (σ, R) it was computed for: recomputed only where
     // they changed (its erf inverse is the costliest step of the sort at 10⁶ particles).

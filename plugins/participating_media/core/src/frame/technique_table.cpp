@@ -6,6 +6,7 @@
 #include "blocks/blocks_technique.h"
 #include "particles/particles_technique.h"
 #include "raymarch/raymarch_technique.h"
+#include "sheets/sheets_technique.h"
 
 namespace nimbus::media {
 
@@ -14,6 +15,7 @@ TechniqueTable builtInTechniques() {
     table.add(particlesTechnique());
     table.add(blocksTechnique());
     table.add(raymarchTechnique());
+    table.add(sheetsTechnique());
     table.add(billboardsTechnique());
     return table;
 }

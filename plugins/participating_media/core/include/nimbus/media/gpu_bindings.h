@@ -22,6 +22,7 @@ inline constexpr std::size_t kMaxHostLights = gpu::kMaxLights;  // MEDIA_MAX_LIG
 // Texture units.
 inline constexpr GLuint kSlabsUnit = 0;           // MEDIA_SLABS_UNIT
 inline constexpr GLuint kHostDepthUnit = 0;       // MEDIA_HOST_DEPTH_UNIT
+inline constexpr GLuint kSheetUnit = 0;           // MEDIA_SHEET_UNIT (sheet_composite.frag)
 inline constexpr GLuint kSceneDepthUnit = 3;      // MEDIA_SCENE_DEPTH_UNIT
 inline constexpr GLuint kShadowDepthUnit = 4;     // MEDIA_SHADOW_DEPTH_UNIT
 inline constexpr GLuint kImpostorDepthsUnit = 5;  // MEDIA_IMPOSTOR_DEPTHS_UNIT

@@ -114,7 +114,7 @@ std::function<std::vector<std::string>(const std::any&)> idleOf(const SettingFie
     return [&fields](const std::any& read) { return idleKeys(fields, std::any_cast<const S&>(read)); };
 }
 
-// particles, blocks, raymarch and billboards (core/src/frame/technique_table.cpp).
+// particles, blocks, raymarch, sheets and billboards (core/src/frame/technique_table.cpp).
 TechniqueTable builtInTechniques();
 
 }  // namespace nimbus::media

@@ -1,0 +1,17 @@
+// What a splat's vertices hand its fragments (particle_splats.*, sheets/sheet_splats.*): define
+// SPLAT_VARYING as `out` in a vertex shader and `in` in a fragment shader before including this.
+flat SPLAT_VARYING vec4 vCentreRadius;  // origin-relative centre, radius
+flat SPLAT_VARYING float vSigma;
+flat SPLAT_VARYING float vFog;           // the fog factor at the centre (common/fog.glsl)
+#ifdef SPLAT_CONSTANT
+flat SPLAT_VARYING vec4 vSource;        // F0
+#else
+SPLAT_VARYING vec4 vSource;             // F0 + gx·x + gy·y (an affine function of the billboard's plane: exact)
+SPLAT_VARYING vec2 vCorner;             // x, y
+flat SPLAT_VARYING vec4 vFit[4];        // r2, r4, cx, cy
+#endif
+flat SPLAT_VARYING vec4 vSun;           // rgb: albedo × the sun's radiance, a: the centre ray's shading offset
+flat SPLAT_VARYING vec2 vPhase;         // phase function (0 HG, 1 Rayleigh), g
+#ifdef MEDIA_FRAGMENT_LAMPS
+flat SPLAT_VARYING vec3 vAlbedo;        // the lamps' light per fragment is scattered with it
+#endif

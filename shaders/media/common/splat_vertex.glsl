@@ -1,0 +1,32 @@
+// One corner of a splat: the particle at `rank` in draw order, with the fit of its source the
+// lighting pass computed (particle_lighting.comp): its linear part interpolated across the quad,
+// the rest for the fragments. Needs common/frame, fog, media particle_data, billboard,
+// particle_light_layout, the DrawOrder and ParticleLight buffers and splat_varyings (as out).
+void splatVertex(int rank, vec2 corner) {
+    int index = int(drawOrder[rank]);
+    GpuParticle particle = particles[index];
+    vec4 pr = particle.positionRadius;
+    vFog = fogAtPoint(pr.xyz);
+    vCentreRadius = pr;
+    vSigma = particle.albedoSigma.w;
+    vPhase = vec2(particle.extra.x, particle.emissionG.w);
+    uint base = PARTICLE_LIGHT_STRIDE * uint(rank);
+    vSun = particleLight[base + SUN_SLOT];
+#ifdef MEDIA_FRAGMENT_LAMPS
+    vAlbedo = particle.albedoSigma.rgb;
+#endif
+    Billboard b = billboardOf(pr.xyz, pr.w);
+#ifdef SPLAT_CONSTANT
+    vSource = particleLight[base];
+#else
+    for (int k = 0; k < 4; ++k) vFit[k] = particleLight[base + 3u + uint(k)];
+    vCorner = corner;
+    vSource = particleLight[base];
+    if (!b.coversScreen) vSource += particleLight[base + 1u] * corner.x + particleLight[base + 2u] * corner.y;
+#endif
+    if (b.coversScreen) {
+        gl_Position = vec4(corner, 0.5, 1.0);
+        return;
+    }
+    gl_Position = frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);
+}
