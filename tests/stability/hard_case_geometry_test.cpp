@@ -68,11 +68,11 @@ TEST_F(StabilityTest, ParticlesCrossingNearPlaneWithinBound) {
 const HardCase kSurfaceThroughCentres{.name = "surface_through_centres",
                                       .scene = "surface_through_centres.gltf",
                                       .camera = "main",
-                                      .settings = {"blocks=26"}};
+                                      .blockSettings = {"blocks=26"}};
 const HardCase kSurfaceGrazing{.name = "surface_grazing",
                                .scene = "surface_through_centres.gltf",
                                .camera = "grazing",
-                               .settings = {"blocks=26"}};
+                               .blockSettings = {"blocks=26"}};
 
 TEST_F(StabilityTest, SurfaceThroughParticleCentresStaysFinite) {
     expectFiniteAndClean(kSurfaceThroughCentres, runCase(context(), kSurfaceThroughCentres));

@@ -102,8 +102,13 @@ ModeRun runTier(gpu::Context& context, sandbox::Session& session, const HardCase
     run.tier = tier;
     run.mode = tier == Tier::Blocks ? MediaMode::Blocks : MediaMode::Particles;
     (void)context.takeGlErrors();
+    auto& settings = session.app().resource<Settings>();
+    settings.set("mode", tier == Tier::Blocks ? "blocks" : "particles", "stability test");  // before the mode's own settings
+    for (const std::string& kv : c.blockSettings)
+        if (const auto eq = kv.find('='); tier == Tier::Blocks) settings.set(kv.substr(0, eq), kv.substr(eq + 1), "stability test");
     run.image = renderTier(session, tier, c.width, c.height, c.camera);
     const assets::RgbImage second = renderTier(session, tier, c.width, c.height, c.camera);
+    for (const std::string& kv : c.blockSettings) settings.unset(kv.substr(0, kv.find('=')));
     run.glErrors = context.takeGlErrors();
     run.stats = mediaStats(session);
     run.nonfinite = countNonfinite(run.image);

@@ -57,7 +57,8 @@ struct HardCase {
     std::string camera;                 // empty: the scene's first
     int width = 160, height = 90;
     double time = 0.0;                  // simulated to before rendering
-    std::vector<std::string> settings;  // KEY=VALUE for both modes (e.g. "blocks=26")
+    std::vector<std::string> settings;       // KEY=VALUE for both modes (e.g. "layer_light=off")
+    std::vector<std::string> blockSettings;  // KEY=VALUE for the blocks tier alone (e.g. "blocks=26"): refused in particles
 };
 
 // What a real-time run renders: the exact tier in each mode, and `particles` in the balanced and
