@@ -143,7 +143,8 @@ constexpr std::size_t kValuesAtOnce = std::size_t{1} << 22;
 void fillVolume(const Volume& v, double h, Deposit& deposit, ProgressBar* progress) {
     const VolumeSampler sampler(v, h);
     const Source src = sourceOf(v.medium.albedo, v.medium.emission, v.medium.g, v.medium.phase);
-    const auto [lo, hi] = volumeIndexBox(v, h);
+    const std::pair<glm::ivec3, glm::ivec3> box = volumeIndexBox(v, h);
+    const glm::ivec3 lo = box.first, hi = box.second;  // not a structured binding: clang 14 cannot capture one in a lambda
     const std::size_t nx = static_cast<std::size_t>(hi.x - lo.x + 1), ny = static_cast<std::size_t>(hi.y - lo.y + 1);
     const int slicesAtOnce = static_cast<int>(std::clamp<std::size_t>(kValuesAtOnce / (nx * ny), 1, 16));
     std::vector<float> values(nx * ny * static_cast<std::size_t>(slicesAtOnce));
