@@ -74,7 +74,9 @@ float noiseSin(precise float x) {
 float noiseValue(precise vec3 p, uint seed) {
     precise vec3 i = floor(p);
     precise vec3 f = p - i;
-    int x = int(i.x), y = int(i.y), z = int(i.z);
+    // Clamped into int's range as noise_field.cpp does: the conversion is undefined beyond it.
+    precise vec3 cell = clamp(i, vec3(-2147483648.0), vec3(2147483520.0));
+    int x = int(cell.x), y = int(cell.y), z = int(cell.z);
     precise vec3 u = vec3(noiseFade(f.x), noiseFade(f.y), noiseFade(f.z));
     precise float v00 = noiseLerp(noiseLattice(x, y, z, seed), noiseLattice(x + 1, y, z, seed), u.x);
     precise float v10 = noiseLerp(noiseLattice(x, y + 1, z, seed), noiseLattice(x + 1, y + 1, z, seed), u.x);

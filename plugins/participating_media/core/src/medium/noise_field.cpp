@@ -41,10 +41,15 @@ float fade(float f) {
     return w * t;
 }
 
+constexpr float kLowestCell = -2147483648.0f, kHighestCell = 2147483520.0f;  // -2^31, the float below 2^31 less 1
+
 float valueNoise(glm::vec3 p, std::uint32_t seed) {
     const glm::vec3 i(std::floor(p.x), std::floor(p.y), std::floor(p.z));
     const glm::vec3 f(p.x - i.x, p.y - i.y, p.z - i.z);
-    const int x = static_cast<int>(i.x), y = static_cast<int>(i.y), z = static_cast<int>(i.z);
+    // The cell as an int, its float clamped into int's range first (the conversion is undefined
+    // beyond it, and x + 1 must not overflow): noise.glsl clamps alike, so the bits still agree.
+    const auto cell = [](float v) { return static_cast<int>(std::clamp(v, kLowestCell, kHighestCell)); };
+    const int x = cell(i.x), y = cell(i.y), z = cell(i.z);
     const glm::vec3 u(fade(f.x), fade(f.y), fade(f.z));
     const float v00 = lerp(lattice(x, y, z, seed), lattice(x + 1, y, z, seed), u.x);
     const float v10 = lerp(lattice(x, y + 1, z, seed), lattice(x + 1, y + 1, z, seed), u.x);
