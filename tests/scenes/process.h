@@ -23,6 +23,9 @@ struct ProcessResult {
     std::vector<std::string> errLines() const;
 };
 
+// Exit code, signal, stdout and stderr in one message for assertion failures.
+inline std::string explain(const ProcessResult& r) { return r.describe() + "\nstdout:\n" + r.out + "\nstderr:\n" + r.err; }
+
 // Runs `program` with `args` (argv[1..]) and waits for it, at most `limitSeconds` when that is
 // > 0 (then it is killed, signaled and timedOut). Throws std::runtime_error when it cannot be
 // started at all.

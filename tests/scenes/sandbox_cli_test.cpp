@@ -25,8 +25,6 @@ const fs::path kContent = NIMBUS_CONTENT_DIR_FOR_TESTS;
 
 ProcessResult sandbox(const std::vector<std::string>& args) { return runProcess(sandboxExecutable(), args); }
 
-// Exit code, signal and stderr in one message for assertion failures.
-std::string explain(const ProcessResult& r) { return r.describe() + "\nstdout:\n" + r.out + "\nstderr:\n" + r.err; }
 
 void expectRefused(const ProcessResult& r) {
     EXPECT_FALSE(r.signaled) << "crashed instead of refusing: " << explain(r);

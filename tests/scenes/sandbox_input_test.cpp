@@ -26,7 +26,6 @@ std::string joined(const std::vector<std::string>& args) {
     return out;
 }
 
-std::string explain(const ProcessResult& r) { return r.describe() + "\nstdout:\n" + r.out + "\nstderr:\n" + r.err; }
 
 ProcessResult sandbox(const std::vector<std::string>& args) { return runProcess(sandboxExecutable(), args, kLimitSeconds); }
 

@@ -25,7 +25,6 @@ const fs::path kData = NIMBUS_TEST_DATA_DIR;
 const fs::path kContent = NIMBUS_CONTENT_DIR_FOR_TESTS;
 
 ProcessResult sandbox(const std::vector<std::string>& args) { return runProcess(sandboxExecutable(), args); }
-std::string explain(const ProcessResult& r) { return r.describe() + "\nstdout:\n" + r.out + "\nstderr:\n" + r.err; }
 
 TEST(SandboxExport, RefusesBadArgumentsInOneLine) {
     TempFolder out;

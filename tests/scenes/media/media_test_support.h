@@ -64,6 +64,11 @@ inline FramePair renderBoth(const std::filesystem::path& scene, double time, int
 
 inline double luminance(const glm::vec3& c) { return nimbus::media::reference::luminance(c.r, c.g, c.b); }
 
+// Channels of `image` that are NaN or infinite.
+inline std::size_t countNonfinite(const assets::RgbImage& image) {
+    return static_cast<std::size_t>(std::count_if(image.rgb.begin(), image.rgb.end(), [](float v) { return !std::isfinite(v); }));
+}
+
 // The entity spawned from the node called `name` (fails the test when there is none).
 inline ecs::Entity nodeEntity(ecs::World& world, const std::string& name) {
     ecs::Entity found = ecs::kNullEntity;

@@ -145,9 +145,7 @@ TEST_F(VolumeScenes, EveryVolumeSceneStaysFiniteInBothModels) {
             SCOPED_TRACE(entry.path().filename().string() + (model == assets::Scattering::Multiple ? " multiple" : " single"));
             sandbox::Session session({.scene = entry.path(), .settings = {"mode=raymarch"}, .scattering = model});
             const assets::RgbImage image = session.renderRealtime(64, 36);
-            std::size_t nonfinite = 0;
-            for (const float v : image.rgb) nonfinite += std::isfinite(v) ? 0 : 1;
-            EXPECT_EQ(nonfinite, 0u);
+            EXPECT_EQ(countNonfinite(image), 0u);
             EXPECT_EQ(context().takeGlErrors().count, 0u);
         }
         ++scenes;

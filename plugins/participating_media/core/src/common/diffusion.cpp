@@ -97,7 +97,6 @@ float halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec
 }  // namespace
 
 std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm::vec3>& fluence) {
-    const glm::vec3 luminance(0.2126f, 0.7152f, 0.0722f);
     std::vector<glm::vec3> flux(m.count(), glm::vec3(0.0f));
     const float h = static_cast<float>(m.voxel);
     auto hasMedium = [&](const glm::ivec3& q) {
@@ -110,8 +109,8 @@ std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm:
                 const glm::ivec3 at(x, y, z);
                 if (!hasMedium(at)) continue;
                 const std::size_t v = m.index(x, y, z);
-                const float D = glm::dot(diffusivity(m, v), luminance);
-                const float phi = glm::dot(fluence[v], luminance);
+                const float D = glm::dot(diffusivity(m, v), kLuminanceWeights);
+                const float phi = glm::dot(fluence[v], kLuminanceWeights);
                 glm::vec3 gradient(0.0f);
                 for (int a = 0; a < 3; ++a) {
                     glm::ivec3 step(0);
@@ -120,12 +119,12 @@ std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm:
                     float ahead = 0.0f, behind = 0.0f, reachAhead = 0.5f * h + kBoundary * D, reachBehind = reachAhead;
                     if (hasMedium(at + step)) {
                         const glm::ivec3 q = at + step;
-                        ahead = glm::dot(fluence[m.index(q.x, q.y, q.z)], luminance);
+                        ahead = glm::dot(fluence[m.index(q.x, q.y, q.z)], kLuminanceWeights);
                         reachAhead = h;
                     }
                     if (hasMedium(at - step)) {
                         const glm::ivec3 q = at - step;
-                        behind = glm::dot(fluence[m.index(q.x, q.y, q.z)], luminance);
+                        behind = glm::dot(fluence[m.index(q.x, q.y, q.z)], kLuminanceWeights);
                         reachBehind = h;
                     }
                     // The derivative of the parabola through the three values, at the middle one.

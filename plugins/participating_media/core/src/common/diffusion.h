@@ -20,6 +20,9 @@
 namespace nimbus::media {
 
 // The medium sampled at voxel centres, x fastest.
+// Rec. 709 luminance weights: the grid's scalar measures (fluence, flux, albedo) are taken in them.
+inline const glm::vec3 kLuminanceWeights(0.2126f, 0.7152f, 0.0722f);
+
 struct MediumGrid {
     glm::ivec3 size{0};
     glm::dvec3 min{0.0};   // world position of voxel 0's outer corner

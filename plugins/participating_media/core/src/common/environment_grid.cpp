@@ -210,7 +210,7 @@ std::vector<glm::vec3> firstScattering(const MediumGrid& original, const Environ
         if (!(original.sigma[v] > 0.0f)) continue;
         const float g = original.sigmaG[v] / original.sigma[v];
         const float f = g * g;
-        const float sigmaS = glm::dot(original.scattering[v], glm::vec3(0.2126f, 0.7152f, 0.0722f));
+        const float sigmaS = glm::dot(original.scattering[v], kLuminanceWeights);
         scaled.sigma[v] = original.sigma[v] - f * sigmaS;
         keep[v] = 1.0f - f;
     }
@@ -269,13 +269,12 @@ std::vector<glm::vec3> dilated(const MediumGrid& m, const std::vector<glm::vec3>
 // voxels as φ is.
 std::vector<glm::vec4> directionalTexels(const MediumGrid& m, const glm::vec3& ambient, const EnvironmentTransmittance& environment,
                                          const std::vector<glm::vec3>& radiance, const std::vector<glm::vec3>& flux) {
-    const glm::vec3 luminance(0.2126f, 0.7152f, 0.0722f);
-    const float ambientLuminance = glm::dot(ambient, luminance);
+    const float ambientLuminance = glm::dot(ambient, kLuminanceWeights);
     const float inv4Pi = 1.0f / (4.0f * static_cast<float>(kPi));
     std::vector<glm::vec3> a(m.count(), glm::vec3(0.0f));
     std::vector<glm::vec3> weight(m.count(), glm::vec3(0.0f));
     for (std::size_t v = 0; v < m.count(); ++v) {
-        const float base = ambientLuminance * environment.mean[v] + glm::dot(radiance[v], luminance) * inv4Pi;
+        const float base = ambientLuminance * environment.mean[v] + glm::dot(radiance[v], kLuminanceWeights) * inv4Pi;
         if (!(base > 0.0f) || !(m.sigma[v] > 0.0f)) continue;
         const glm::vec3 p1 = (3.0f * inv4Pi * flux[v] - 3.0f * ambientLuminance * environment.moment[v]) / base;
         // A radiance x(1 + a·ω) is negative somewhere where |a| > 1, as P1 gives at a lit rim where the
@@ -399,8 +398,7 @@ void buildEnvironmentGrid(const MediumGrid& medium, const EnvironmentLighting& l
     double again = 0.0, first = 0.0;  // the first scattering's light, weighted by the chance it scatters again
     for (std::size_t v = 0; v < medium.count(); ++v)
         if (medium.sigma[v] > 0.0f) {
-            const glm::vec3 luminance(0.2126f, 0.7152f, 0.0722f);
-            const double q = glm::dot(source[v], luminance), albedo = glm::dot(medium.scattering[v], luminance) / medium.sigma[v];
+                    const double q = glm::dot(source[v], kLuminanceWeights), albedo = glm::dot(medium.scattering[v], kLuminanceWeights) / medium.sigma[v];
             first += q;
             again += q * albedo * (1.0 - environment.mean[v]);
         }
