@@ -1,8 +1,9 @@
 // The per-particle lighting buffer (media/particle_lighting_pass.cpp), per rank in draw order:
 //   0..6  the fit F0, gx, gy, r2, r4, cx, cy (particle_lighting.comp), rgb the source of all but
 //         the fragments' sun and lamps, a the sun's transport
-//   7     rgb albedo × the sun's radiance, w how far in front of its closest approach the centre
-//         ray's light is seen
+//   7     rgb albedo × the sun's radiance (negated where a mesh crosses the particle: the fit's a
+//         then holds the medium's transmittance alone), w how far in front of its closest approach
+//         the centre ray's light is seen
 // SPLAT_CONSTANT (particles of a few pixels, where a fit has nothing to follow): F0 alone, then
 // the slot that is 7 above.
 const int MAX_FRAGMENT_LAMPS = 2;

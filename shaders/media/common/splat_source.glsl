@@ -2,7 +2,8 @@
 // sheets/sheet_splats.frag): the lighting pass's fit (particle_lighting.comp), with the sun's phase
 // function and the lamps (MEDIA_FRAGMENT_LAMPS) at the pixel's own ray, towards the fog colour.
 // Needs common/math, frame, lights, media optics, kernel_table, particle_light_layout and
-// splat_varyings (as in); with MEDIA_FRAGMENT_LAMPS also light_views, slices, spot_cone and mesh_shadow.
+// splat_varyings (as in); with MEDIA_FRAGMENT_LAMPS also slices and spot_cone, with it or
+// MEDIA_MESH_CROSSINGS light_views and mesh_shadow.
 #ifdef MEDIA_FRAGMENT_LAMPS
 // Lamp `light`'s light scattered by the particle's visible segment [lo, hi] of the ray (u from the
 // closest point), per unit albedo and radiance, as the layer's source: σ∫ρ(u)e^−τ(u)·S(u)du / α
@@ -51,6 +52,34 @@ float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi,
 }
 #endif
 
+#ifdef MEDIA_MESH_CROSSINGS
+// The sun's mesh visibility over this ray's visible segment [lo, hi] of a particle that a mesh
+// crosses (the lighting pass flags it by negating vSun.rgb and fits the medium's transmittance
+// alone): a fit smooth across the billboard would carry the lit side's light across the mesh into
+// its shadow. As in the reference, the share of the segment's kernel mass on the lit side: the
+// occluder's depth margin, tapped a deviation either side of the mass's centroid, is taken as
+// linear along the ray (a locally flat occluder), which places the boundary without the exact
+// tier's bisection: two shadow-map taps.
+float crossedSunVisibility(vec3 origin, vec3 dir, float tc, float beta2, float tSurface) {
+    float radius = vCentreRadius.w;
+    float h = radius * sqrt(max(1.0 - beta2, 0.0));
+    float lo = max(-h, -tc), hi = min(h, tSurface - tc);
+    if (!(hi > lo)) return 1.0;
+    float middle = chordCentroid(Chord(tc, beta2 * radius * radius, h), radius, lo, hi);
+    float spread = min(radius / 3.0, 0.25 * (hi - lo));
+    float a = max(middle - spread, lo), b = min(middle + spread, hi);
+    vec3 base = origin + dir * tc;
+    float ma = meshShadowMargin(uFragmentSun, base + dir * a), mb = meshShadowMargin(uFragmentSun, base + dir * b);
+    if ((ma > 0.0) == (mb > 0.0) || !(b > a)) return ma > 0.0 ? 1.0 : 0.0;
+    float crossing = clamp(a + (b - a) * ma / (ma - mb), lo, hi);
+    float sk = sqrt(KERNEL_FALLOFF) / radius;
+    float total = gaussianSegment(sk, lo, hi);
+    if (!(total > 0.0)) return 1.0;
+    float before = gaussianSegment(sk, lo, crossing) / total;  // the mass in front of the boundary
+    return clamp(ma > 0.0 ? before : 1.0 - before, 0.0, 1.0);
+}
+#endif
+
 // tc: the ray's distance to its closest approach to the centre, perp the centre's offset from
 // it, beta (beta2) that offset (squared) in radii; tSurface: where the ray meets the scene;
 // alpha: the opacity of the particle's whole visible segment.
@@ -63,8 +92,14 @@ vec3 splatSource(vec3 origin, vec3 dir, float tc, vec3 perp, float beta, float b
                vFit[3] * (vCorner.y * vCorner.y * vCorner.y);
 #endif
     vec3 source = max(fit.rgb, vec3(0.0));
+    float sunTransport = max(fit.a, 0.0);
+#ifdef MEDIA_MESH_CROSSINGS
+    // A variant of its own: llvmpipe runs this for every fragment, crossed or not (a branch or a
+    // loop's first pass runs under a mask whatever the lanes).
+    if (vCrossed != 0) sunTransport *= crossedSunVisibility(origin, dir, tc, beta2, tSurface);
+#endif
     if (uFragmentSun >= 0)  // the sun's phase at this pixel's own ray: g = 0.99 peaks within a few pixels
-        source += vSun.rgb * (phaseValue(vPhase.x, vPhase.y, -lights[uFragmentSun].direction.xyz, dir) * max(fit.a, 0.0));
+        source += abs(vSun.rgb) * (phaseValue(vPhase.x, vPhase.y, -lights[uFragmentSun].direction.xyz, dir) * sunTransport);
 #ifdef MEDIA_FRAGMENT_LAMPS
     float h = sqrt(max(radius * radius - dot(perp, perp), 0.0));
     float lo = max(-h, -tc), hi = min(h, tSurface - tc);

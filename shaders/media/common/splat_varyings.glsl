@@ -9,6 +9,9 @@ flat SPLAT_VARYING vec4 vSource;        // F0
 SPLAT_VARYING vec4 vSource;             // F0 + gx·x + gy·y (an affine function of the billboard's plane: exact)
 SPLAT_VARYING vec2 vCorner;             // x, y
 flat SPLAT_VARYING vec4 vFit[4];        // r2, r4, cx, cy
+#ifdef MEDIA_MESH_CROSSINGS
+flat SPLAT_VARYING int vCrossed;        // 1 where a mesh crosses the particle (splat_source.glsl), else 0
+#endif
 #endif
 flat SPLAT_VARYING vec4 vSun;           // rgb: albedo × the sun's radiance, a: the centre ray's shading offset
 flat SPLAT_VARYING vec2 vPhase;         // phase function (0 HG, 1 Rayleigh), g

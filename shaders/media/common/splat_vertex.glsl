@@ -20,6 +20,9 @@ void splatVertex(int rank, vec2 corner) {
     vSource = particleLight[base];
 #else
     for (int k = 0; k < 4; ++k) vFit[k] = particleLight[base + 3u + uint(k)];
+#ifdef MEDIA_MESH_CROSSINGS
+    vCrossed = any(lessThan(vSun.rgb, vec3(0.0))) ? 1 : 0;
+#endif
     vCorner = corner;
     vSource = particleLight[base];
     if (!b.coversScreen) vSource += particleLight[base + 1u] * corner.x + particleLight[base + 2u] * corner.y;

@@ -5,7 +5,10 @@
 //     F(x, y, β) = F0 + gx·x + gy·y + (r2 + r4·β²)·β² + cx·x³ + cy·y³
 // (x, y its corner coordinates in [−1, 1], β the ray's impact parameter in radii). F is a vec4:
 // rgb the source of everything but the sun, a the sun's transport to the ray's shading point
-// (mesh visibility × the medium's transmittance). The fragments multiply the sun's by its phase
+// (mesh visibility × the medium's transmittance; with MEDIA_MESH_CROSSINGS the transmittance alone
+// where a mesh crosses the particle, flagged by a negated sun factor: the fragments then take the
+// visibility over their own segment, as a smooth fit would carry light across the mesh). The
+// fragments multiply the sun's by its phase
 // function at their own ray (g = 0.99 peaks within a few pixels) and evaluate lamps themselves.
 // The odd cubic and even quartic terms follow a dense trail's sunward rim, which brightens sharply.
 // SPLAT_CONSTANT: the centre ray alone, for particles a few pixels wide (10⁶ of them).
@@ -33,24 +36,35 @@ layout(location = 0) uniform uint uCount;
 
 const float INNER = 0.5, OUTER = 0.9;  // the two rings of samples, in billboard half sizes
 
-// The sun's transport to p: mesh visibility × the medium's transmittance over the layer.
-float sunTransport(vec3 origin, vec3 dir, Chord chord, float radius, float lo, float hi, float u, float tau, GpuParticle particle) {
+float occluderMargin(int sun, vec3 p) {
+#ifdef MEDIA_MESH_CROSSINGS
+    return meshShadowMargin(sun, p);
+#else
+    return 1e30;  // read only to flag crossings
+#endif
+}
+
+// The sun's transport to p: (mesh visibility, the medium's transmittance over the layer, how far p
+// lies in front of the shadow map's occluder along the sun).
+vec3 sunTransport(vec3 origin, vec3 dir, Chord chord, float radius, float lo, float hi, float u, float tau, GpuParticle particle) {
     int sun = uFragmentSun;
     vec3 p = origin + dir * (chord.tClosest + u);
     vec3 entry = origin + dir * (chord.tClosest + lo);
     float vBar = shadingDepthFraction(tau) * tau;
 #ifdef LIGHTING_EXACT
     float visibility = lights[sun].spot.z >= 0.0 ? segmentVisibility(sun, origin, dir, chord, radius, lo, hi, u) : 1.0;
-    return visibility * layerLightTransmittance(sun, entry, p, vBar, tau, particle);
+    return vec3(visibility, layerLightTransmittance(sun, entry, p, vBar, tau, particle), occluderMargin(sun, p));
 #else
     float atP = mediumOpticalDepth(sun, p);
     float transmittance = vBar > 1e-4 && tau > 1e-4 ? layerTransmittance(mediumOpticalDepth(sun, entry), atP, vBar, tau) : exp(-atP);
-    return mediumMeshVisibility(sun, p, radius / 3.0) * transmittance;
+    return vec3(mediumMeshVisibility(sun, p, radius / 3.0), transmittance, occluderMargin(sun, p));
 #endif
 }
 
-// The source along one ray (rgb: all but the fragments' sun and lamps; a: the sun's transport).
-vec4 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank) {
+// The source along one ray (rgb: all but the fragments' sun and lamps; a: the sun's transport), and
+// the sun's parts apart (sunParts: see sunTransport).
+vec4 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank, out vec3 sunParts) {
+    sunParts = vec3(1.0, 0.0, 1e30);
     float radius = particle.positionRadius.w;
     Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, radius);
     float u0 = max(0.0, chord.tClosest - chord.halfChord) - chord.tClosest;  // the medium starts at the eye
@@ -59,7 +73,8 @@ vec4 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank)
     float tau = particle.albedoSigma.w * chordIntegral(chord, radius, u0, u1);
     float u = chordShadingPoint(chord, radius, u0, u1, tau);
     float lo = max(u0, -chord.halfChord);
-    float sun = uFragmentSun >= 0 ? sunTransport(origin, dir, chord, radius, lo, u1, u, tau, particle) : 0.0;
+    if (uFragmentSun >= 0) sunParts = sunTransport(origin, dir, chord, radius, lo, u1, u, tau, particle);
+    float sun = sunParts.x * sunParts.y;
 #ifdef LIGHTING_EXACT
     LayerOrder layer = LayerOrder(index, rank, 1e30, 1e30);
     return vec4(segmentSource(origin, dir, chord, radius, lo, u1, u, tau, particle, layer), sun);
@@ -80,11 +95,17 @@ vec4 raySource(vec3 origin, vec3 dir, GpuParticle particle, int index, int rank)
 #endif
 }
 
-vec4 sourceThrough(vec3 point, GpuParticle particle, int index, int rank) {
+vec4 sourceThrough(vec3 point, GpuParticle particle, int index, int rank, out vec3 sunParts) {
     vec3 origin, dir;
     cameraRayThrough(point, origin, dir);
-    return raySource(origin, dir, particle, index, rank);
+    return raySource(origin, dir, particle, index, rank, sunParts);
 }
+
+// A mesh crosses the particle where the nine rays' visibilities differ by more than this and the
+// occluder lies within half a radius of one of their shading points along the sun: the fragments
+// then take the visibility themselves (splat_source.glsl). A distant mesh's shadow edge stays in
+// the fit. The technique draws every particle within two radii of a mesh's box with that variant.
+const float CROSSED_VISIBILITY_SPREAD = 0.1;
 
 // How far in front of the closest approach along the centre ray the particle's light is seen (the
 // shading point, where its optical depth from the entry reaches v̄), for the fragments' lamps.
@@ -134,10 +155,11 @@ void main() {
     float radius = particle.positionRadius.w;
     Billboard b = billboardOf(centre, radius);
     vec4 fit[7] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
-    vec4 j0 = sourceThrough(centre, particle, index, int(rank));
+    vec3 sun0;
+    vec4 j0 = sourceThrough(centre, particle, index, int(rank), sun0);
     uint base = PARTICLE_LIGHT_STRIDE * rank;
     vec3 sunFactor = uFragmentSun >= 0 ? particle.albedoSigma.rgb * lights[uFragmentSun].radiance.rgb : vec3(0.0);
-    particleLight[base + SUN_SLOT] = vec4(sunFactor, centreShadingOffset(centre, particle));
+    bool crossed = false;
 #ifdef SPLAT_CONSTANT
     particleLight[base] = j0;
 #else
@@ -146,13 +168,29 @@ void main() {
     } else {
         vec3 axes[4] = vec3[](b.right, -b.right, b.up, -b.up);
         vec4 inner[4], outer[4];
+        vec3 sunInner[4], sunOuter[4];
+        float lowest = sun0.x, highest = sun0.x, margin = abs(sun0.z);
         for (int k = 0; k < 4; ++k) {
-            inner[k] = sourceThrough(centre + axes[k] * INNER, particle, index, int(rank));
-            outer[k] = sourceThrough(centre + axes[k] * OUTER, particle, index, int(rank));
+            inner[k] = sourceThrough(centre + axes[k] * INNER, particle, index, int(rank), sunInner[k]);
+            outer[k] = sourceThrough(centre + axes[k] * OUTER, particle, index, int(rank), sunOuter[k]);
+            lowest = min(lowest, min(sunInner[k].x, sunOuter[k].x));
+            highest = max(highest, max(sunInner[k].x, sunOuter[k].x));
+            margin = min(margin, min(abs(sunInner[k].z), abs(sunOuter[k].z)));
+        }
+#ifdef MEDIA_MESH_CROSSINGS
+        crossed = highest - lowest > CROSSED_VISIBILITY_SPREAD && margin < 0.5 * radius;
+#endif
+        if (crossed) {  // fit the transmittance alone
+            j0.a = sun0.y;
+            for (int k = 0; k < 4; ++k) {
+                inner[k].a = sunInner[k].y;
+                outer[k].a = sunOuter[k].y;
+            }
         }
         fitBillboard(j0, inner, outer, impactSquared(centre + b.right * INNER, centre, radius),
                      impactSquared(centre + b.right * OUTER, centre, radius), fit);
     }
     for (int k = 0; k < 7; ++k) particleLight[base + uint(k)] = fit[k];
 #endif
+    particleLight[base + SUN_SLOT] = vec4(crossed ? -sunFactor : sunFactor, centreShadingOffset(centre, particle));
 }

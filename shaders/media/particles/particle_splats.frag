@@ -10,11 +10,13 @@
 #include "media/common/optics.glsl"
 #include "media/common/kernel_table.glsl"
 #include "media/common/particle_light_layout.glsl"
-#ifdef MEDIA_FRAGMENT_LAMPS
+#if defined(MEDIA_FRAGMENT_LAMPS) || defined(MEDIA_MESH_CROSSINGS)
 #include "common/light_views.glsl"
+#include "media/common/mesh_shadow.glsl"
+#endif
+#ifdef MEDIA_FRAGMENT_LAMPS
 #include "media/common/slices.glsl"
 #include "media/common/spot_cone.glsl"
-#include "media/common/mesh_shadow.glsl"
 #endif
 #define SPLAT_VARYING in
 #include "media/common/splat_varyings.glsl"

@@ -15,6 +15,8 @@ layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) readonly buffer ParticleL
 #include "media/common/splat_varyings.glsl"
 #include "media/common/splat_vertex.glsl"
 
+layout(location = 12) uniform int uFirstRank;  // the draw's first rank: balanced draws runs by variant
+
 const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
 
-void main() { splatVertex(gl_InstanceID, kCorners[gl_VertexID]); }
+void main() { splatVertex(uFirstRank + gl_InstanceID, kCorners[gl_VertexID]); }

@@ -12,6 +12,7 @@ unseen_*     scenes the renderer was not tuned on (tests/scenes/media/unseen_sce
 absorber     albedo 0, no emission, no ambient, white background (absorber_test.cpp).
 moving_shadow  a uniform slab of particles under a box that the test moves (moving_shadow_test.cpp).
 shadow_edge  one large particle half under a plate (shadow_edge_test.cpp).
+wing_through_cloud  a thin wing through a cloud's middle (seam_band_test.cpp).
 colour_pairs  pairs of differently coloured particles whose depth order flips as the camera orbits (sheets_test.cpp).
 """
 import math
@@ -304,6 +305,19 @@ def absorber():
     return b
 
 
+def wing_through_cloud():
+    """A thin wing (6 x 0.04 x 1.3 m, rolled 6 degrees) through the middle of a cloud, sun from above
+    and ahead: the wing cuts particles in two and shadows the half below it, so the band where
+    the wing lies inside particles shows whether a renderer cuts a particle at the surface and keeps
+    the light of its lit half from bleeding into its shadowed half (seam_band_test.cpp)."""
+    def wing(b, rng):
+        white = b.material("wing", (0.75, 0.75, 0.78), double_sided=True)
+        b.node("wing", translation=(0.0, 2.0, 0.2), rotation=(0, 0, 0.0523360, 0.9986295),
+               mesh=b.box_mesh("wing", (6.0, 0.04, 1.3), white))
+    return cloud_scene("cloud", 116, 3.0, (1.5, 3.4, 8.5), (0, 2, 0), 260, (0, 2, 0), (2.6, 1.3, 1.8), (0.45, 0.95),
+                       {"albedo": (0.95, 0.95, 0.95), "g": 0.5}, sun((0.25, -0.85, -0.45)), SKY, extra=wing)
+
+
 # Shared with moving_shadow_test.cpp: the slab of particles and the box's two positions.
 SLAB_MIN, SLAB_MAX, SLAB_SPACING, SLAB_RADIUS = (-3.0, 1.5, -1.0), (3.0, 2.5, 1.0), 0.25, 0.4
 
@@ -386,6 +400,7 @@ SCENES = {
     "unseen_transformed_node": unseen_transformed_node,
     "unseen_mesh_through_medium": unseen_mesh_through_medium,
     "unseen_far_from_origin": unseen_far_from_origin,
+    "wing_through_cloud": wing_through_cloud,
     "absorber": absorber,
     "moving_shadow": moving_shadow,
     "shadow_edge": shadow_edge,

@@ -131,7 +131,7 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(samplerUnit(composite.id(), "uSeamMask"), static_cast<GLint>(kSeamMaskUnit));
     EXPECT_EQ(storageBinding(composite.id(), "DrawOrder"), static_cast<GLint>(kDrawOrderBinding));
 
-    const gpu::Program splats = gpu::compileProgram(particleSplatDesc(false, true, false));
+    const gpu::Program splats = gpu::compileProgram(particleSplatDesc({.lamps = true}));
     EXPECT_EQ(samplerUnit(splats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));
     const gpu::Program sheetSplats = gpu::compileProgram(sheetSplatDesc(true, false));
     EXPECT_EQ(samplerUnit(sheetSplats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));

@@ -1,5 +1,6 @@
 // frame/media_settings.cpp's defaults, and common/medium_footprint.cpp: splatFootprint and automaticMediaScale,
-// what media_scale=auto is chosen from.
+// what media_scale=auto is chosen from, and particlesNearMeshes, which particles balanced draws with the
+// mesh-crossing variant.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -52,6 +53,22 @@ TEST(AutomaticMediaScale, KeepsEightTexelsAcrossATypicalBillboard) {
     EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 8.0}, false), 0.5f) << "never above ½";
     EXPECT_FLOAT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 24.0}, false), 1.0f / 3.0f);
     EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 400.0}, false), 0.25f) << "never below ¼";
+}
+
+TEST(ParticlesNearMeshes, ATiltedThinBoxReachesOnlyTheSpheresWithinReach) {
+    ParticleSet particles;
+    particles.push({0.0, 1.0, 0.0}, 0.5f, 1.0f, Medium{});  // 1 m above the box's plane
+    // A 4 × 0.02 × 4 m plate through the origin, rolled 45° about z: its axis-aligned hull reaches y = 1.4.
+    const double c = std::sqrt(0.5);
+    OccluderBox plate;
+    plate.axis[0] = {c, c, 0.0};
+    plate.axis[1] = {-c, c, 0.0};
+    plate.half = {2.0, 0.01, 2.0};
+    EXPECT_EQ(particlesNearMeshes({plate}, particles, 1.0), std::vector<std::uint8_t>{0}) << "the sphere lies 0.7 m off the plate";
+    EXPECT_EQ(particlesNearMeshes({plate}, particles, 1.5), std::vector<std::uint8_t>{1}) << "within 1.5 radii";
+    particles.push({0.5, 0.5, 1.0}, 0.2f, 1.0f, Medium{});  // on the plate's plane
+    EXPECT_EQ(particlesNearMeshes({plate}, particles, 1.0), (std::vector<std::uint8_t>{0, 1}));
+    EXPECT_EQ(particlesNearMeshes({}, particles, 1.0), (std::vector<std::uint8_t>{0, 0}));
 }
 
 TEST(MediaRenderSettings, ZeroFieldsTakeTheirDefaultsAndChosenOnesStay) {

@@ -56,7 +56,9 @@ TEST_F(ShaderVariants, ExactParticles) {
 TEST_F(ShaderVariants, ParticleLighting) {
     std::vector<gpu::ProgramDesc> descs;
     for (bool exact : {false, true})
-        for (bool constant : {false, true}) addBothLightings(descs, particleLightingDesc(exact, constant));
+        for (bool constant : {false, true})
+            for (bool crossings : {false, true})
+                addBothLightings(descs, particleLightingDesc({.exact = exact, .constant = constant, .meshCrossings = crossings}));
     expectCompiles(descs);
 }
 
@@ -64,7 +66,9 @@ TEST_F(ShaderVariants, ParticleSplats) {
     std::vector<gpu::ProgramDesc> descs;
     for (bool eyeInside : {false, true})
         for (bool lamps : {false, true})
-            for (bool constant : {false, true}) descs.push_back(particleSplatDesc(eyeInside, lamps, constant));
+            for (bool constant : {false, true})
+                for (bool crossings : {false, true})
+                    descs.push_back(particleSplatDesc({.eyeInside = eyeInside, .lamps = lamps, .constant = constant, .meshCrossings = crossings}));
     expectCompiles(descs);
 }
 

@@ -64,6 +64,23 @@ bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& li
     return false;
 }
 
+std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach) {
+    std::vector<std::uint8_t> near(particles.size(), 0);
+    for (const OccluderBox& box : meshes) {
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            const glm::dvec3 d = particles.position[i] - box.centre;
+            double outside = 0.0;  // squared distance from the centre to the box
+            for (int k = 0; k < 3; ++k) {
+                const double excess = std::max(std::abs(glm::dot(d, box.axis[k])) - box.half[k], 0.0);
+                outside += excess * excess;
+            }
+            const double r = reach * particles.radius[i];
+            if (outside < r * r) near[i] = 1;
+        }
+    }
+    return near;
+}
+
 bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view) {
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const glm::dvec3 d = particles.position[i] - view.origin;

@@ -42,6 +42,8 @@ public:
     // Sorts by the centres' depth along the view axis, farthest first (sheets mode: the particles
     // that reach into a sheet are one run of ranks), and uploads the order.
     void sortByViewDepth(const ParticleSet& particles, const gpu::View& view);
+    // After sorting: the particle index at each rank (what the DrawOrder buffer holds).
+    const std::vector<std::uint32_t>& order() const { return order_cpu_; }
     // After sortByViewDepth: the view depth of the particle at each rank (non-increasing).
     const std::vector<float>& rankDepths() const { return rankDepths_; }
 

@@ -20,24 +20,26 @@ constexpr std::size_t kSlotsPerParticle = 8, kSlotsPerConstantParticle = 2;  // 
 
 ParticleLightingPass::ParticleLightingPass() = default;
 
-const gpu::Program& ParticleLightingPass::program(const GraphFrame& context, bool exact, bool constant) {
-    std::unique_ptr<LocalLightPrograms>& p = programs_[(exact ? 1 : 0) + (constant ? 2 : 0)];
-    if (!p) p = std::make_unique<LocalLightPrograms>(particleLightingDesc(exact, constant));
+const gpu::Program& ParticleLightingPass::program(const GraphFrame& context, const LightingVariant& variant) {
+    std::unique_ptr<LocalLightPrograms>& p =
+        programs_[(variant.exact ? 1 : 0) + (variant.constant ? 2 : 0) + (variant.meshCrossings ? 4 : 0)];
+    if (!p) p = std::make_unique<LocalLightPrograms>(particleLightingDesc(variant));
     return p->forLights(context.host.lights, context.multiple);
 }
 
-gpu::ProgramDesc particleLightingDesc(bool exact, bool constant) {
+gpu::ProgramDesc particleLightingDesc(const LightingVariant& variant) {
     gpu::ProgramDesc desc{.compute = "media/particles/particle_lighting.comp"};
-    if (exact) desc.defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"};
-    if (constant) desc.defines.push_back("SPLAT_CONSTANT");
+    if (variant.exact) desc.defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"};
+    if (variant.constant) desc.defines.push_back("SPLAT_CONSTANT");
+    if (variant.meshCrossings) desc.defines.push_back("MEDIA_MESH_CROSSINGS");
     return desc;
 }
 
 void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
-                               std::size_t particles, bool exact, bool constant, const FragmentLamps& lamps) {
-    const gpu::Program& program = this->program(context, exact, constant);
+                               std::size_t particles, const LightingVariant& variant, const FragmentLamps& lamps) {
+    const gpu::Program& program = this->program(context, variant);
     // Sized from the set: the buffer fills when the upload pass runs.
-    const std::size_t bytes = std::max<std::size_t>(particles, 1) * (constant ? kSlotsPerConstantParticle : kSlotsPerParticle) * sizeof(glm::vec4);
+    const std::size_t bytes = std::max<std::size_t>(particles, 1) * (variant.constant ? kSlotsPerConstantParticle : kSlotsPerParticle) * sizeof(glm::vec4);
     if (!light_ || capacity_ < bytes) {
         capacity_ = std::max(bytes, capacity_ * 3 / 2);
         light_ = gpu::createBuffer(capacity_, nullptr, 0);

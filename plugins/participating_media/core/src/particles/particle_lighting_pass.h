@@ -25,21 +25,25 @@ struct FragmentLamps {
 FragmentLamps fragmentLamps(const std::vector<Light>& lights);
 
 // Per-particle lighting (the fast tiers): each particle's source fitted over its billboard, in draw
-// order, from nine rays through it (`exact`: each shaded as particles.frag shades a pixel;
-// `constant`: the centre ray alone, for particles a few pixels wide).
-// The per-particle lighting program (particle_lighting.comp): balanced's exact chord integrals, one ray per particle.
-gpu::ProgramDesc particleLightingDesc(bool exact, bool constant);
+// order, from nine rays through it.
+struct LightingVariant {
+    bool exact = false;          // each ray shaded as particles.frag shades a pixel
+    bool constant = false;       // the centre ray alone, for particles a few pixels wide
+    bool meshCrossings = false;  // flag the particles a mesh crosses, for the splats' MEDIA_MESH_CROSSINGS
+};
+// The per-particle lighting program (particle_lighting.comp).
+gpu::ProgramDesc particleLightingDesc(const LightingVariant& variant);
 
 class ParticleLightingPass {
 public:
     ParticleLightingPass();
     void add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer, std::size_t particles,
-             bool exact, bool constant, const FragmentLamps& lamps);
+             const LightingVariant& variant, const FragmentLamps& lamps);
     void bind() const;  // the lighting buffer, for the splats
 
 private:
-    const gpu::Program& program(const GraphFrame& context, bool exact, bool constant);
-    std::unique_ptr<LocalLightPrograms> programs_[4];  // by exact + 2·constant, built when first asked for
+    const gpu::Program& program(const GraphFrame& context, const LightingVariant& variant);
+    std::unique_ptr<LocalLightPrograms> programs_[8];  // by exact + 2·constant + 4·meshCrossings, built when first asked for
     gpu::Buffer light_;
     std::size_t capacity_ = 0;
 };

@@ -3,6 +3,8 @@
 // pre-integrated table (shaders/media/particle_splats.*). Blends exactly as ParticlePass does.
 #include "particles/particle_splat_pass.h"
 
+#include <algorithm>
+
 #include "common/kernel_table.h"
 #include "common/lit_media_inputs.h"
 #include "common/frame_blocks.h"
@@ -14,28 +16,56 @@ namespace nimbus::media {
 namespace {
 constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
+constexpr GLint kFirstRankLocation = 12;     // particle_splats.vert uFirstRank
 }
 
 ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 
-const gpu::Program& ParticleSplatPass::program(bool eyeInside, bool lamps, bool constant) {
-    gpu::Program& p = programs_[(eyeInside ? 1 : 0) + (lamps ? 2 : 0) + (constant ? 4 : 0)];
-    if (!p) p = gpu::compileProgram(particleSplatDesc(eyeInside, lamps, constant));
+const gpu::Program& ParticleSplatPass::program(const SplatVariant& variant) {
+    gpu::Program& p = programs_[(variant.eyeInside ? 1 : 0) + (variant.lamps ? 2 : 0) + (variant.constant ? 4 : 0) +
+                                (variant.meshCrossings ? 8 : 0)];
+    if (!p) p = gpu::compileProgram(particleSplatDesc(variant));
     return p;
 }
 
-gpu::ProgramDesc particleSplatDesc(bool eyeInside, bool lamps, bool constant) {
+gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant) {
     gpu::ProgramDesc desc{.vertex = "media/particles/particle_splats.vert", .fragment = "media/particles/particle_splats.frag"};
-    if (eyeInside) desc.defines.push_back("MEDIA_EYE_INSIDE");
-    if (lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
-    if (constant) desc.defines.push_back("SPLAT_CONSTANT");
+    if (variant.eyeInside) desc.defines.push_back("MEDIA_EYE_INSIDE");
+    if (variant.lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
+    if (variant.constant) desc.defines.push_back("SPLAT_CONSTANT");
+    if (variant.meshCrossings && !variant.constant) desc.defines.push_back("MEDIA_MESH_CROSSINGS");
     return desc;
 }
 
+std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& near, std::uint32_t minGap) {
+    std::vector<SplatRun> runs;
+    const auto count = static_cast<std::uint32_t>(order.size());
+    for (std::uint32_t rank = 0; rank < count; ++rank) {
+        const bool crossing = near[order[rank]] != 0;
+        if (runs.empty() || runs.back().meshCrossings != crossing) runs.push_back({rank, 0, crossing});
+        ++runs.back().count;
+    }
+    // Join a short plain run between two crossing runs into one crossing run.
+    std::vector<SplatRun> joined;
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const bool shortGap = !runs[i].meshCrossings && runs[i].count < minGap && i > 0 && i + 1 < runs.size();
+        if ((shortGap || runs[i].meshCrossings) && !joined.empty() && joined.back().meshCrossings)
+            joined.back().count += runs[i].count;
+        else
+            joined.push_back(runs[i]);
+    }
+    return joined;
+}
+
 gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
-                                              const ParticleLightingPass& lighting, bool eyeInside, bool constant,
+                                              const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> nearMesh,
                                               const FragmentLamps& lamps, const MediaTarget& target) {
-    const gpu::Program& program = this->program(eyeInside, lamps.lamps[0] >= 0, constant);
+    variant.lamps = lamps.lamps[0] >= 0;
+    const bool crossings = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
+    SplatVariant crossing = variant, plain = variant;
+    crossing.meshCrossings = true;
+    plain.meshCrossings = false;
+    const gpu::Program* programs[2] = {&program(plain), crossings ? &program(crossing) : nullptr};
     struct Data {
         gpu::ResourceHandle media, depth, slices, shadowMap;
     };
@@ -46,12 +76,11 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
             d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
             d.depth = builder.read(context.sceneDepth);
             if (lamps.lamps[0] >= 0 && context.slices.valid()) d.slices = builder.read(context.slices);
-            if (lamps.lamps[0] >= 0 && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            if ((variant.lamps || crossings) && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
         },
-        [this, &program, &context, &buffer, &lighting, lamps, w, h, scale = target.fullResScale](const gpu::PassResources& resources,
-                                                                                          const Data& d) {
+        [this, programs, crossings, nearMesh = std::move(nearMesh), &context, &buffer, &lighting, lamps, w, h,
+         scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
             const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
-            glUseProgram(program.id());
             context.blocks->bind();
             buffer.bindParticles();
             buffer.bindOrder();
@@ -60,12 +89,23 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
-            glProgramUniform2f(program.id(), 1, scale.x, scale.y);
-            glProgramUniform1i(program.id(), kFragmentSunLocation, lamps.sun);
-            if (lamps.lamps[0] >= 0) glProgramUniform1iv(program.id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
+            for (const gpu::Program* program : programs) {
+                if (program == nullptr) continue;
+                glProgramUniform2f(program->id(), 1, scale.x, scale.y);
+                glProgramUniform1i(program->id(), kFragmentSunLocation, lamps.sun);
+                if (lamps.lamps[0] >= 0) glProgramUniform1iv(program->id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
+            }
             gpu::applyPipeline(kMediaOver);
             glBindVertexArray(vertexArray_.id());
-            glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
+            // The order is known only now: the upload pass sorted it.
+            const std::vector<SplatRun> draws =
+                crossings ? splatRuns(buffer.order(), nearMesh) : std::vector<SplatRun>{{0, static_cast<std::uint32_t>(buffer.count()), false}};
+            for (const SplatRun& run : draws) {
+                const GLuint id = programs[run.meshCrossings ? 1 : 0]->id();
+                glUseProgram(id);
+                glProgramUniform1i(id, kFirstRankLocation, static_cast<GLint>(run.first));
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(run.count));
+            }
         });
     return data.media;
 }

@@ -11,20 +11,39 @@
 namespace nimbus::media {
 
 // Fast particles: the sorted billboards with per-vertex source and per-fragment opacity from the
-// pre-integrated kernel table. `eyeInside`: some particle contains the eye (its segment starts there).
-// The splat program (particle_splats.*): eye inside the medium, lamps per fragment, one ray per particle.
-gpu::ProgramDesc particleSplatDesc(bool eyeInside, bool lamps, bool constant);
+// pre-integrated kernel table.
+struct SplatVariant {
+    bool eyeInside = false;      // some particle contains the eye (its segment starts there)
+    bool lamps = false;          // point or spot lights per fragment (set by add from its lamps)
+    bool constant = false;       // one ray per particle (LightingVariant::constant)
+    bool meshCrossings = false;  // the sun's mesh visibility per fragment where the lighting pass flags a crossing
+};
+// The splat program (particle_splats.*).
+gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant);
+
+// A run of consecutive draw ranks drawn with one program: the mesh-crossing variant or not.
+struct SplatRun {
+    std::uint32_t first = 0, count = 0;
+    bool meshCrossings = false;
+};
+// The runs of `order` (particle index per rank) by `near` (per particle): the mesh-crossing variant
+// costs every fragment it draws, crossed or not (llvmpipe), so only the ranks near a mesh take it.
+// A gap of fewer than `minGap` ranks between two near runs joins them (a draw call each costs more).
+std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& near,
+                                std::uint32_t minGap = 8);
 
 class ParticleSplatPass {
 public:
     ParticleSplatPass();
+    // `nearMesh` (per particle, or empty): the particles drawn with the mesh-crossing variant, in
+    // runs of the draw order (splatRuns) found when the pass runs, after the sort.
     gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
-                               const ParticleLightingPass& lighting, bool eyeInside, bool constant, const FragmentLamps& lamps,
-                               const MediaTarget& target);
+                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> nearMesh,
+                               const FragmentLamps& lamps, const MediaTarget& target);
 
 private:
-    const gpu::Program& program(bool eyeInside, bool lamps, bool constant);
-    gpu::Program programs_[8];  // by eyeInside + 2·lamps + 4·constant, built when first asked for
+    const gpu::Program& program(const SplatVariant& variant);
+    gpu::Program programs_[16];  // by eyeInside + 2·lamps + 4·constant + 8·meshCrossings, built when first asked for
     gpu::Texture kernelTable_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };

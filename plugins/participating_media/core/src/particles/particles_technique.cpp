@@ -1,5 +1,7 @@
 #include "particles/particles_technique.h"
 
+#include <algorithm>
+
 #include "common/shared_frame.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/media/medium_footprint.h"
@@ -46,6 +48,12 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
      &setBoolean<&ParticlesSettings::layerLight>, &perFragmentLighting},
 };
 
+// Balanced takes the sun's mesh visibility per fragment on the particles a mesh crosses
+// (splat_source.glsl), in runs of the draw order near a mesh. The lighting pass flags a particle
+// only where the occluder lies within half a radius of a shading point, so within 1.5 radii of its
+// centre: the runs reach two radii, so every flagged particle is drawn by the crossing variant.
+constexpr double kCrossingReach = 2.0;
+
 class ParticlesTechnique final : public MediaTechnique {
 public:
     void upload(TechniqueFrame& frame, const GraphFrame& context) override {
@@ -76,12 +84,19 @@ private:
         // Billboards of a few pixels: a fit across them has nothing to follow, and at 10⁶ particles
         // its nine rays and varyings cost more than the pixels.
         const bool constant = shared.coverage * v.width * v.height < kConstantSplatPixels * static_cast<double>(frame.particles->size());
+        const bool exact = own.lighting == ParticleLighting::ParticleExact;
+        std::vector<std::uint8_t> nearMesh;
+        if (exact && !constant && lamps.sun >= 0 && context.shadowMap.valid() && !context.host.occluders.empty())
+            nearMesh = particlesNearMeshes(context.host.occluders, *frame.particles, kCrossingReach);
+        const bool crossings = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
         frame.report("exact_lighting", false);
         frame.report("constant_source", constant);
-        lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(), own.lighting == ParticleLighting::ParticleExact,
-                           constant, lamps);
-        return splatPass_->add(graph, context, *shared.buffer, *lightingPass_, eyeInsideMedium(*frame.particles, v), constant, lamps,
-                               shared.target);
+        frame.report("mesh_crossings", crossings);
+        lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
+                           {.exact = exact, .constant = constant, .meshCrossings = crossings}, lamps);
+        return splatPass_->add(graph, context, *shared.buffer, *lightingPass_,
+                               {.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant}, std::move(nearMesh),
+                               lamps, shared.target);
     }
 
     gpu::ResourceHandle addPerFragment(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame,

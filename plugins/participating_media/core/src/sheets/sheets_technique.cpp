@@ -83,8 +83,8 @@ public:
         // As in `particles`: billboards of a few pixels have nothing for a fit to follow.
         const bool constant = shared.coverage * v.width * v.height < kConstantSplatPixels * static_cast<double>(frame.particles->size());
         frame.report("constant_source", constant);
-        lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(), own.lighting == SheetLighting::ParticleExact, constant,
-                           lamps);
+        lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
+                           {.exact = own.lighting == SheetLighting::ParticleExact, .constant = constant}, lamps);
         return sheetPass_->add(graph, context, *shared.buffer, lightingPass_.get(), plan_, constant, lamps, shared.target);
     }
 

@@ -4,6 +4,7 @@
 // techniques choose resolutions and shading variants from these.
 //
 // Does not: touch the GPU.
+#include <cstdint>
 #include <vector>
 
 #include "nimbus/base/aabb.h"
@@ -41,6 +42,10 @@ bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds);
 // through its centre (a column over kLampMediumColumn): the particles mode's exact_near_lamps.
 inline constexpr double kLampMediumColumn = 0.1;
 bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& lights);
+
+// Per particle (1/0): whether some mesh's box (HostFrame::occluders) comes within `reach` radii of
+// its centre (reach 1: into its sphere).
+std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach);
 
 // Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
 bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view);

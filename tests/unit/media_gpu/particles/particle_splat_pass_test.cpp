@@ -1,0 +1,57 @@
+// particles/particle_splat_pass.cpp: splatRuns, the runs of the draw order balanced draws with and
+// without the mesh-crossing variant.
+#include <gtest/gtest.h>
+
+#include "particles/particle_splat_pass.h"
+
+namespace nimbus::media {
+namespace {
+
+std::vector<std::uint32_t> identity(std::uint32_t n) {
+    std::vector<std::uint32_t> order(n);
+    for (std::uint32_t i = 0; i < n; ++i) order[i] = i;
+    return order;
+}
+
+TEST(SplatRuns, FollowTheDrawOrderNotTheParticleIndex) {
+    // Particle 0 is near a mesh and drawn last.
+    const auto runs = splatRuns({2, 1, 0}, {1, 0, 0}, 1);
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[0].first, 0u);
+    EXPECT_EQ(runs[0].count, 2u);
+    EXPECT_FALSE(runs[0].meshCrossings);
+    EXPECT_EQ(runs[1].first, 2u);
+    EXPECT_EQ(runs[1].count, 1u);
+    EXPECT_TRUE(runs[1].meshCrossings);
+}
+
+TEST(SplatRuns, ShortGapsJoinTheirNeighboursButNotTheEnds) {
+    // near: ranks 2..3 and 6, plain gaps 0..1 (an end), 4..5 (short) and 7..9 (an end).
+    std::vector<std::uint8_t> near(10, 0);
+    near[2] = near[3] = near[6] = 1;
+    const auto runs = splatRuns(identity(10), near, 4);
+    ASSERT_EQ(runs.size(), 3u);
+    EXPECT_FALSE(runs[0].meshCrossings);
+    EXPECT_EQ(runs[0].count, 2u);
+    EXPECT_TRUE(runs[1].meshCrossings);
+    EXPECT_EQ(runs[1].first, 2u);
+    EXPECT_EQ(runs[1].count, 5u) << "ranks 2..6, the gap 4..5 drawn with the crossing variant";
+    EXPECT_FALSE(runs[2].meshCrossings);
+    EXPECT_EQ(runs[2].first, 7u);
+    EXPECT_EQ(runs[2].count, 3u);
+}
+
+TEST(SplatRuns, EveryRankIsDrawnOnce) {
+    std::vector<std::uint8_t> near(100, 0);
+    for (std::size_t i = 0; i < near.size(); i += 7) near[i] = 1;
+    std::uint32_t next = 0;
+    for (const SplatRun& run : splatRuns(identity(100), near)) {
+        EXPECT_EQ(run.first, next);
+        next += run.count;
+    }
+    EXPECT_EQ(next, 100u);
+    EXPECT_TRUE(splatRuns({}, {}).empty());
+}
+
+}  // namespace
+}  // namespace nimbus::media
