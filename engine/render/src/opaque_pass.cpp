@@ -1,8 +1,9 @@
 // Opaque meshes, shaded with glTF's metallic-roughness BRDF, mesh shadows and what extensions add
 // (the medium's transmittance; shaders/opaque.*), one program variant per material's features and
 // the frame's lights.
-// Writes scene colour (linear RGBA32F, cleared to the background radiance) and reversed-Z depth,
-// which later passes read for soft particles and mesh–medium intersections.
+// Writes the output (linear RGBA32F, cleared to the background radiance; compose blends the media
+// over it) and reversed-Z depth, which later passes read for soft particles and mesh–medium
+// intersections.
 #include "passes.h"
 
 #include "material_binding.h"
@@ -50,7 +51,7 @@ OpaquePass::Variant OpaquePass::frameVariant(const FrameContext& context) {
     return variant;
 }
 
-void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows) {
+void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows, const gpu::Texture& output) {
     struct Data {
         ResourceHandle color, depth, shadowMap;
         std::vector<std::pair<GLuint, ResourceHandle>> textures;  // the extensions' (unit, texture)
@@ -59,7 +60,7 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
     const auto& data = graph.addPass<Data>(
         "opaque",
         [&](PassBuilder& builder, Data& d) {
-            d.color = builder.create("scene_color", {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.color = builder.write(graph.importTexture("output", output));
             d.depth = builder.create("scene_depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, w, h, 1, 1});
             if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
             for (const auto& input : context.meshShading)

@@ -25,11 +25,11 @@ private:
     friend class OpaquePass;
 };
 
-// glTF metallic-roughness meshes with shadows into scene colour + depth (docs/design.md §3 step 2).
+// glTF metallic-roughness meshes with shadows into the output + scene depth (docs/design.md §3 step 2).
 class OpaquePass {
 public:
     OpaquePass();
-    void add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows);
+    void add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows, const gpu::Texture& output);
 
 private:
     // What a program is compiled for: a material's features (material_binding.h), the extensions'
@@ -49,11 +49,11 @@ private:
     std::map<Variant, gpu::Program> programs_;
 };
 
-// media over opaque into the persistent output (docs/design.md §3 step 4).
+// media (and fog) blended over the opaque image in the persistent output (docs/design.md §3 step 4).
 class ComposePass {
 public:
     ComposePass();
-    void add(FrameGraph& graph, FrameContext& context, const gpu::Texture& output);
+    void add(FrameGraph& graph, FrameContext& context);
 
 private:
     enum Variant { kLayer = 1, kUpsample = 2, kFog = 4 };
