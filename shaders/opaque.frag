@@ -48,8 +48,9 @@ layout(location = 4) uniform vec3 uEmissiveFactor;
 layout(location = 0) out vec4 outRadiance;
 
 // One light's term. Back-facing and shadowed points add an exact zero instead of skipping the light:
-// a `continue` cost llvmpipe more than the arithmetic it skips, and the select keeps a back face's
-// non-finite BRDF value out.
+// a `continue` cost llvmpipe more than the arithmetic it skips. max() keeps the BRDF finite on a
+// back face (its formula assumes n·l ≥ 0); the select makes the term zero there whatever the
+// shadow and slice lookups return.
 vec3 lightTerm(SurfaceBrdf brdf, vec3 n, vec3 v, LightSample s, float visibility, float transmittance) {
     float cosine = dot(n, s.toLight);
     vec3 term = brdfTimesCosine(brdf, n, v, s.toLight, max(cosine, 0.0)) * s.irradiance * (visibility * transmittance);
