@@ -18,6 +18,18 @@
 
 in vec3 vPosition;
 in vec3 vNormal;
+// VERTEX_LIGHTS: how many of the first lights come with light-view coordinates from opaque.vert
+// (VERTEX_DIRECTIONAL_LIGHTS: bit i set when light i of them is directional);
+// FRAGMENT_LIGHTS: whether any light follows them. Both are compile-time (render/opaque_pass.cpp)
+// because llvmpipe runs a branch or a loop body under a mask even when no lane takes it.
+#if VERTEX_LIGHTS > 0
+in vec4 vShadowClip[VERTEX_LIGHTS];
+in float vShadowDepth[VERTEX_LIGHTS];
+#ifdef MEDIA_LIGHT_TRANSMITTANCE
+in vec4 vSliceClip[VERTEX_LIGHTS];
+in float vSliceDepth[VERTEX_LIGHTS];
+#endif
+#endif
 #ifdef VERTEX_COLOR
 in vec4 vColor;
 #endif
@@ -34,6 +46,34 @@ in vec2 vEmissiveUv;
 layout(location = 4) uniform vec3 uEmissiveFactor;
 
 layout(location = 0) out vec4 outRadiance;
+
+// One light's term. Back-facing and shadowed points add an exact zero instead of skipping the light:
+// a `continue` cost llvmpipe more than the arithmetic it skips. max() keeps the BRDF finite on a
+// back face (its formula assumes n·l ≥ 0); the select makes the term zero there whatever the
+// shadow and slice lookups return.
+vec3 lightTerm(SurfaceBrdf brdf, vec3 n, vec3 v, LightSample s, float visibility, float transmittance) {
+    float cosine = dot(n, s.toLight);
+    vec3 term = brdfTimesCosine(brdf, n, v, s.toLight, max(cosine, 0.0)) * s.irradiance * (visibility * transmittance);
+    return cosine > 0.0 ? term : vec3(0.0);
+}
+
+#if VERTEX_LIGHTS > 0
+// Light i (< VERTEX_LIGHTS, a compile-time constant once inlined) from its interpolated view coordinates.
+vec3 vertexLight(int i, SurfaceBrdf brdf, vec3 n, vec3 v) {
+    float visibility = meshVisibilityAt(i, vShadowClip[i], vShadowDepth[i], n);
+    float transmittance = 1.0;
+#ifdef MEDIA_LIGHT_TRANSMITTANCE
+    int view = mediaLightSlices[i].x;
+    float depth = mediaViewOpticalDepthAt(mediaSliceViews[max(view, 0)], vSliceClip[i], vSliceDepth[i]);
+    if (mediaSliceCount.x != 0 && view >= 0) transmittance = exp(-depth);
+#endif
+    // Which kind the light is is known here (VERTEX_DIRECTIONAL_LIGHTS): a sun's fragments skip the
+    // point and spot falloff that sampleLight would compute under a mask.
+    LightSample s = (VERTEX_DIRECTIONAL_LIGHTS & (1u << i)) != 0u ? LightSample(-lights[i].direction.xyz, 1e30, lights[i].radiance.rgb)
+                                                                 : sampleLight(i, vPosition);
+    return lightTerm(brdf, n, v, s, visibility, transmittance);
+}
+#endif
 
 void main() {
     vec4 base = uBaseColorFactor;
@@ -60,20 +100,31 @@ void main() {
     SurfaceBrdf brdf = surfaceBrdf(base.rgb, metallicRoughness.x, metallicRoughness.y);
 
     vec3 radiance = base.rgb * frame.ambient.rgb + emissive;
-    int i = 0;
+#if VERTEX_LIGHTS > 0
+    radiance += vertexLight(0, brdf, n, v);
+#endif
+#if VERTEX_LIGHTS > 1
+    radiance += vertexLight(1, brdf, n, v);
+#endif
+#if VERTEX_LIGHTS > 2
+    radiance += vertexLight(2, brdf, n, v);
+#endif
+#if VERTEX_LIGHTS > 3
+    radiance += vertexLight(3, brdf, n, v);
+#endif
+#ifdef FRAGMENT_LIGHTS
     // do-while, not for (here and in the shaders it includes): llvmpipe runs a for loop's body once
     // more under an empty mask, which doubled the cost of a one-light frame.
-    if (frame.counts.x > 0) do {
+    int i = VERTEX_LIGHTS;
+    do {
         LightSample s = sampleLight(i, vPosition);
-        float cosine = dot(n, s.toLight);
-        if (cosine <= 0.0) continue;
         float visibility = meshVisibility(i, vPosition, n);
-        if (visibility <= 0.0) continue;
         float transmittance = 1.0;
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
         transmittance = mediaTransmittance(i, lights[i].position.xyz, vPosition);
 #endif
-        radiance += brdfTimesCosine(brdf, n, v, s.toLight, cosine) * s.irradiance * (visibility * transmittance);
+        radiance += lightTerm(brdf, n, v, s, visibility, transmittance);
     } while (++i < frame.counts.x);
+#endif
     outRadiance = vec4(radiance, 1.0);
 }

@@ -3,6 +3,22 @@
 // per vertex, so fragments only sample.
 #include "common/frame.glsl"
 #include "common/material.glsl"
+// VERTEX_LIGHTS (0–4): the frame's first lights, each with at most one shadow view and one slice
+// view (no cube maps), whose light-view coordinates are computed here: they are linear in the
+// position, so interpolating them is exact, and fragments skip two matrix products per view.
+#if VERTEX_LIGHTS > 0
+#include "common/math.glsl"
+#include "common/lights.glsl"
+#include "common/light_views.glsl"
+#include "common/shadow_views.glsl"
+out vec4 vShadowClip[VERTEX_LIGHTS];
+out float vShadowDepth[VERTEX_LIGHTS];
+#ifdef MEDIA_LIGHT_TRANSMITTANCE
+#include "media/host/light_transmittance.glsl"
+out vec4 vSliceClip[VERTEX_LIGHTS];
+out float vSliceDepth[VERTEX_LIGHTS];
+#endif
+#endif
 
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -45,4 +61,17 @@ void main() {
     vEmissiveUv = materialUv(uEmissiveUv, uEmissiveTexCoord, aUv0, aUv1);
 #endif
     gl_Position = frame.viewProjection * world;
+#if VERTEX_LIGHTS > 0
+    vec4 p = vec4(world.xyz, 1.0);
+    for (int i = 0; i < VERTEX_LIGHTS; ++i) {
+        GpuLightView shadow = shadowViews[max(int(lights[i].spot.z), 0)];  // unused when the light has none
+        vShadowClip[i] = shadow.viewProjection * p;
+        vShadowDepth[i] = -(shadow.view * p).z;
+#ifdef MEDIA_LIGHT_TRANSMITTANCE
+        GpuLightView slices = mediaSliceViews[max(mediaLightSlices[i].x, 0)];
+        vSliceClip[i] = slices.viewProjection * p;
+        vSliceDepth[i] = -(slices.view * p).z;
+#endif
+    }
+#endif
 }

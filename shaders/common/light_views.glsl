@@ -12,9 +12,11 @@ int lightViewIndex(int first, int count, vec3 lightPosition, vec3 p) {
     return count == 6 ? first + cubeFace(p - lightPosition) : first;
 }
 
-// Where p falls in a light view's texture: false when it lies behind the view or outside it.
-bool lightViewUv(GpuLightView v, vec3 p, out vec2 uv) {
-    vec4 clip = v.viewProjection * vec4(p, 1.0);
+// Where a point with clip coordinates `clip` in a light view falls in the view's texture: false when
+// it lies behind the view or outside it.
+bool lightViewClipUv(vec4 clip, out vec2 uv) {
     uv = clip.xy / max(clip.w, 1e-30) * 0.5 + 0.5;
     return clip.w > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
 }
+
+bool lightViewUv(GpuLightView v, vec3 p, out vec2 uv) { return lightViewClipUv(v.viewProjection * vec4(p, 1.0), uv); }

@@ -1,23 +1,23 @@
 // Mesh shadow maps: one layer per light view in a depth array, reversed Z (closer to the light =
 // larger value), compared with GL_GEQUAL so a lookup returns the lit fraction. Needs lights.glsl
-// and light_views.glsl.
+// and light_views.glsl. PCF_RADIUS, when the program defines it, fixes the kernel at compile time
+// (llvmpipe then runs no loop for the fast tier's single tap); else frame.counts.w says it.
 #include "common/shadow_views.glsl"
 layout(binding = 1) uniform sampler2DArrayShadow shadowMap;
 
-// Fraction of PCF taps that see the light from p. `offsetDir` pushes the lookup off the surface
-// (the normal for meshes, the light direction for media) by a texel-sized amount to avoid acne.
-float meshVisibility(int lightIndex, vec3 p, vec3 offsetDir) {
-    GpuLight L = lights[lightIndex];
-    int first = int(L.spot.z);
-    if (first < 0) return 1.0;
-    GpuLightView v = shadowViews[lightViewIndex(first, int(L.spot.w), L.position.xyz, p)];
-    float depth = max(-(v.view * vec4(p, 1.0)).z, 0.0);
-    float texel = v.params2.y * (v.params.x > 0.5 ? depth : 1.0);
-    vec4 clip = v.viewProjection * vec4(p + offsetDir * (1.5 * texel), 1.0);
+// Fraction of PCF taps around `clip` (the offset point's clip coordinates in view v) that see the light.
+float shadowLookup(GpuLightView v, vec4 clip) {
     vec3 ndc = clip.xyz / clip.w;
     vec2 uv = ndc.xy * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || clip.w <= 0.0) return 1.0;
+#if defined(PCF_RADIUS) && PCF_RADIUS == 0
+    return texture(shadowMap, vec4(uv, v.params2.x, ndc.z));
+#else
+#ifdef PCF_RADIUS
+    const int radius = PCF_RADIUS;
+#else
     int radius = frame.counts.w;
+#endif
     vec2 texelUv = vec2(1.0 / float(frame.counts.z));
     float lit = 0.0;
     int y = -radius;
@@ -29,4 +29,28 @@ float meshVisibility(int lightIndex, vec3 p, vec3 offsetDir) {
     } while (++y <= radius);
     float taps = float((2 * radius + 1) * (2 * radius + 1));
     return lit / taps;
+#endif
+}
+
+// The shadow lookup's offset off the surface: `offsetDir` (the normal) by a texel-sized amount at
+// view depth `depth`, to avoid acne.
+float shadowOffset(GpuLightView v, float depth) { return 1.5 * (v.params2.y * (v.params.x > 0.5 ? depth : 1.0)); }
+
+// Fraction of PCF taps that see light `lightIndex` from p, looked up from p + offsetDir · offset.
+float meshVisibility(int lightIndex, vec3 p, vec3 offsetDir) {
+    GpuLight L = lights[lightIndex];
+    int first = int(L.spot.z);
+    if (first < 0) return 1.0;
+    GpuLightView v = shadowViews[lightViewIndex(first, int(L.spot.w), L.position.xyz, p)];
+    float depth = max(-(v.view * vec4(p, 1.0)).z, 0.0);
+    return shadowLookup(v, v.viewProjection * vec4(p + offsetDir * shadowOffset(v, depth), 1.0));
+}
+
+// The same for a light with at most one view, from p's clip coordinates `clip` and view depth `depth`
+// in it (linear in p, so the vertex stage computes them): the offset is added in clip space.
+float meshVisibilityAt(int lightIndex, vec4 clip, float depth, vec3 offsetDir) {
+    int first = int(lights[lightIndex].spot.z);
+    if (first < 0) return 1.0;
+    GpuLightView v = shadowViews[first];
+    return shadowLookup(v, clip + v.viewProjection * vec4(offsetDir * shadowOffset(v, max(depth, 0.0)), 0.0));
 }

@@ -3,6 +3,8 @@
 // requested size, and a frame is deterministic.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "nimbus/render/gpu_scene.h"
@@ -103,6 +105,48 @@ TEST_F(SceneRendererTest, FramesAreDeterministic) {
     const assets::RgbImage first = render(input(*gpu, true, true), 64, 48);
     const assets::RgbImage second = render(input(*gpu, true, true), 64, 48);
     EXPECT_EQ(first.rgb, second.rgb);
+}
+
+assets::ResolvedLight light(assets::LightType type, glm::dvec3 position, glm::dvec3 direction, float intensity) {
+    assets::ResolvedLight l;
+    l.params.type = type;
+    l.params.intensity = intensity;
+    l.params.outerConeAngle = 0.6;
+    l.position = position;
+    l.direction = glm::normalize(direction);
+    return l;
+}
+
+// Directional and spot lights ahead of the first point light take the vertex-stage path of
+// shaders/opaque.frag (up to four), the rest the per-fragment one: the same sum either way, so the
+// order of the lights changes the image by float rounding only (and a shadow-map comparison that
+// the rounding flips on a rare texel).
+TEST_F(SceneRendererTest, LightOrderChangesTheImageOnlyByRounding) {
+    using assets::LightType;
+    const std::vector<assets::ResolvedLight> lights = {
+        light(LightType::Directional, {}, {-0.3, -1.0, -0.2}, 2.0f),
+        light(LightType::Spot, {3, 4, 2}, {-0.5, -1.0, -0.3}, 60.0f),
+        light(LightType::Directional, {}, {0.6, -0.8, 0.1}, 1.0f),
+        light(LightType::Spot, {-3, 3, 3}, {0.6, -1.0, -0.5}, 40.0f),
+        light(LightType::Directional, {}, {0.1, -0.5, 0.9}, 0.5f),
+        light(LightType::Point, {1.5, 1.0, 1.5}, {0, -1, 0}, 30.0f),
+    };
+    render::FrameInput in = input(*gpu, false, true);
+    in.lights = lights;  // four vertex lights, then the sun and the point light per fragment
+    const assets::RgbImage vertex = render(in, 96, 72);
+    std::rotate(in.lights.rbegin(), in.lights.rbegin() + 1, in.lights.rend());  // the point light first: all per fragment
+    const assets::RgbImage fragment = render(in, 96, 72);
+    int differing = 0;
+    double worst = 0.0;
+    for (int y = 0; y < vertex.height; ++y)
+        for (int x = 0; x < vertex.width; ++x) {
+            const glm::vec3 a = vertex.at(x, y), b = fragment.at(x, y);
+            const double difference = glm::length(a - b) / std::max(glm::length(b), 1e-6f);
+            worst = std::max(worst, difference);
+            if (difference > 1e-5) ++differing;
+        }
+    EXPECT_LE(differing, vertex.width * vertex.height / 200) << "worst relative difference " << worst;
+    EXPECT_EQ(context().takeGlErrors().count, 0u);
 }
 
 TEST_F(SceneRendererTest, ReadOutputPutsRowZeroAtTheTop) {

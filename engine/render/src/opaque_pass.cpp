@@ -1,10 +1,14 @@
 // Opaque meshes, shaded with glTF's metallic-roughness BRDF, mesh shadows and what extensions add
-// (the medium's transmittance; shaders/opaque.*), one program variant per material's features.
-// Writes scene colour (linear RGBA32F, cleared to the background radiance) and reversed-Z depth,
-// which later passes read for soft particles and mesh–medium intersections.
+// (the medium's transmittance; shaders/opaque.*), one program variant per material's features and
+// the frame's lights.
+// Writes the output (linear RGBA32F, cleared to the background radiance; compose blends the media
+// over it) and reversed-Z depth, which later passes read for soft particles and mesh–medium
+// intersections.
 #include "passes.h"
 
 #include "material_binding.h"
+
+#include <algorithm>
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -14,20 +18,40 @@ namespace nimbus::render {
 
 OpaquePass::OpaquePass() = default;
 
-const gpu::Program& OpaquePass::program(unsigned features, const std::vector<MeshShadingInput>& inputs) {
-    std::vector<std::string> extensions;
-    for (const auto& input : inputs) extensions.push_back(input.define);
-    auto key = std::make_pair(features, extensions);
-    auto it = programs_.find(key);
+const gpu::Program& OpaquePass::program(const Variant& variant) {
+    auto it = programs_.find(variant);
     if (it == programs_.end()) {
-        std::vector<std::string> defines = featureDefines(features);
-        defines.insert(defines.end(), extensions.begin(), extensions.end());
-        it = programs_.emplace(std::move(key), gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = defines})).first;
+        std::vector<std::string> defines = featureDefines(variant.features);
+        defines.insert(defines.end(), variant.extensions.begin(), variant.extensions.end());
+        defines.push_back("VERTEX_LIGHTS " + std::to_string(variant.vertexLights));
+        defines.push_back("VERTEX_DIRECTIONAL_LIGHTS " + std::to_string(variant.directionalMask) + "u");
+        if (variant.fragmentLights) defines.emplace_back("FRAGMENT_LIGHTS");
+        defines.push_back("PCF_RADIUS " + std::to_string(variant.pcfRadius));
+        it = programs_.emplace(variant, gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = defines})).first;
     }
     return it->second;
 }
 
-void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows) {
+// The frame's part of the variant: the extensions, the PCF kernel, and the lights. The first lights
+// with at most one view each (not a point light's cube), up to opaque.vert's four, get their
+// shadow-map and light-slice coordinates from the vertex stage.
+OpaquePass::Variant OpaquePass::frameVariant(const FrameContext& context) {
+    constexpr int kMaxVertexLights = 4;
+    const auto& lights = context.input.lights;
+    Variant variant;
+    for (const auto& input : context.meshShading) variant.extensions.push_back(input.define);
+    variant.pcfRadius = context.settings.pcfRadius;
+    while (variant.vertexLights < std::min(kMaxVertexLights, static_cast<int>(lights.size()))) {
+        const assets::LightType type = lights[static_cast<std::size_t>(variant.vertexLights)].params.type;
+        if (type == assets::LightType::Point) break;
+        if (type == assets::LightType::Directional) variant.directionalMask |= 1u << variant.vertexLights;
+        ++variant.vertexLights;
+    }
+    variant.fragmentLights = static_cast<int>(lights.size()) > variant.vertexLights;
+    return variant;
+}
+
+void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows, const gpu::Texture& output) {
     struct Data {
         ResourceHandle color, depth, shadowMap;
         std::vector<std::pair<GLuint, ResourceHandle>> textures;  // the extensions' (unit, texture)
@@ -36,7 +60,7 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
     const auto& data = graph.addPass<Data>(
         "opaque",
         [&](PassBuilder& builder, Data& d) {
-            d.color = builder.create("scene_color", {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.color = builder.write(graph.importTexture("output", output));
             d.depth = builder.create("scene_depth", {GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, w, h, 1, 1});
             if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
             for (const auto& input : context.meshShading)
@@ -63,9 +87,10 @@ void OpaquePass::add(FrameGraph& graph, FrameContext& context, const ShadowPass&
             }
             for (const auto& [unit, texture] : d.textures) glBindTextureUnit(unit, resources.id(texture));
             gpu::applyPipeline({.depth = {.test = true, .compare = GL_GREATER, .write = true}});  // reversed Z
-            auto pick = [this, &context](const GpuMaterial& material, const GpuPrimitive& primitive) {
-                const unsigned features = materialFeatures(material, primitive);
-                return std::make_pair(program(features, context.meshShading).id(), features);
+            Variant variant = frameVariant(context);
+            auto pick = [this, &variant](const GpuMaterial& material, const GpuPrimitive& primitive) {
+                variant.features = materialFeatures(material, primitive);
+                return std::make_pair(program(variant).id(), variant.features);
             };
             drawInstances(context, {.normalMatrixLocation = 1, .cullSingleSided = true, .shading = true, .program = pick});
             glBindSampler(kShadowMapUnit, 0);

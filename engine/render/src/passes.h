@@ -25,24 +25,35 @@ private:
     friend class OpaquePass;
 };
 
-// glTF metallic-roughness meshes with shadows into scene colour + depth (docs/design.md §3 step 2).
+// glTF metallic-roughness meshes with shadows into the output + scene depth (docs/design.md §3 step 2).
 class OpaquePass {
 public:
     OpaquePass();
-    void add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows);
+    void add(FrameGraph& graph, FrameContext& context, const ShadowPass& shadows, const gpu::Texture& output);
 
 private:
-    // The program for a material's features (material_binding.h) with the extensions' mesh shading
-    // defines, compiled when first asked for.
-    const gpu::Program& program(unsigned features, const std::vector<MeshShadingInput>& inputs);
-    std::map<std::pair<unsigned, std::vector<std::string>>, gpu::Program> programs_;
+    // What a program is compiled for: a material's features (material_binding.h), the extensions'
+    // mesh shading defines, and the frame's lighting (shaders/opaque.frag VERTEX_LIGHTS,
+    // FRAGMENT_LIGHTS, PCF_RADIUS), all fixed at compile time because llvmpipe runs both sides of a branch.
+    struct Variant {
+        unsigned features = 0;
+        std::vector<std::string> extensions;
+        int vertexLights = 0;
+        unsigned directionalMask = 0;  // bit i: vertex light i is directional
+        bool fragmentLights = false;
+        int pcfRadius = 0;
+        auto operator<=>(const Variant&) const = default;
+    };
+    static Variant frameVariant(const FrameContext& context);  // all but the material's features
+    const gpu::Program& program(const Variant& variant);      // compiled when first asked for
+    std::map<Variant, gpu::Program> programs_;
 };
 
-// media over opaque into the persistent output (docs/design.md §3 step 4).
+// media (and fog) blended over the opaque image in the persistent output (docs/design.md §3 step 4).
 class ComposePass {
 public:
     ComposePass();
-    void add(FrameGraph& graph, FrameContext& context, const gpu::Texture& output);
+    void add(FrameGraph& graph, FrameContext& context);
 
 private:
     enum Variant { kLayer = 1, kUpsample = 2, kFog = 4 };

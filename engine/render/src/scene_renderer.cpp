@@ -60,9 +60,9 @@ void SceneRenderer::render(const FrameInput& input, const RenderSettings& reques
     FrameGraph graph(pool_);
     shadowPass_->add(graph, context);
     for (auto* extension : extensions) extension->beforeOpaque(graph, context);
-    opaquePass_->add(graph, context, *shadowPass_);
+    opaquePass_->add(graph, context, *shadowPass_, output_);
     for (auto* extension : extensions) extension->afterOpaque(graph, context);
-    composePass_->add(graph, context, output_);
+    composePass_->add(graph, context);
 
     // Everything the shaders read per frame is known once setup is done.
     frameData_.update(context.view, input.environment, input.lights, context.shadowViews, settings.shadowMapSize,

@@ -20,11 +20,11 @@ float mediaSliceValue(vec2 uv, float firstLayer, int k) {
     return c == 0 ? texel.x : c == 1 ? texel.y : c == 2 ? texel.z : texel.w;
 }
 
-// The optical depth one light view's slices hold at p.
-float mediaViewOpticalDepth(GpuLightView v, vec3 p) {
+// The optical depth one light view's slices hold at a point with clip coordinates `clip` and view
+// depth `depth` in that view. Both are linear in the point, so a host may interpolate them per vertex.
+float mediaViewOpticalDepthAt(GpuLightView v, vec4 clip, float depth) {
     vec2 uv;
-    if (!lightViewUv(v, p, uv)) return 0.0;  // slices cover the medium: outside them there is none
-    float depth = -(v.view * vec4(p, 1.0)).z;
+    if (!lightViewClipUv(clip, uv)) return 0.0;  // slices cover the medium: outside them there is none
     int K = int(v.params.w);
     float s = (depth - v.params.y) / (v.params.z - v.params.y) * float(K);
     if (s <= 0.0) return 0.0;
@@ -34,6 +34,11 @@ float mediaViewOpticalDepth(GpuLightView v, vec3 p) {
     float lo = k == 0 ? 0.0 : mediaSliceValue(uv, v.params2.x, max(k - 1, 0));
     float hi = mediaSliceValue(uv, v.params2.x, k);
     return s >= float(K) ? hi : mix(lo, hi, s - float(k));
+}
+
+// The optical depth one light view's slices hold at p.
+float mediaViewOpticalDepth(GpuLightView v, vec3 p) {
+    return mediaViewOpticalDepthAt(v, v.viewProjection * vec4(p, 1.0), -(v.view * vec4(p, 1.0)).z);
 }
 
 // The view of host light `light` (at origin-relative `lightPosition`) whose slices hold p, or −1.

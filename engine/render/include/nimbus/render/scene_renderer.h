@@ -74,7 +74,7 @@ struct FrameContext {
     assets::Aabb shadowBounds;  // world: meshes plus what extensions draw
     std::vector<std::vector<LightView>> shadowViews;  // per light
     ResourceHandle shadowMap;                         // depth array, one layer per shadow view (may be invalid)
-    ResourceHandle sceneColor;                        // opaque radiance (RGBA32F)
+    ResourceHandle sceneColor;                        // the output (RGBA32F): opaque radiance until compose
     ResourceHandle sceneDepth;                        // reversed-Z depth (D32F)
     std::vector<MeshShadingInput> meshShading;        // added by extensions before the opaque pass
     TranslucentLayer overlay;                         // set by an extension after it: composed over the opaque scene
