@@ -33,6 +33,11 @@ layout(local_size_x = 64) in;
 layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) writeonly buffer ParticleLight { vec4 particleLight[]; };  // per rank: particle_light_layout.glsl
 layout(location = 0) uniform uint uCount;
+#ifdef MEDIA_MESH_CROSSINGS
+// Per particle index: 1 where the splats draw it with their mesh-crossing variant (the technique's
+// particlesNearMeshes), the only particles this pass may flag.
+layout(std430, binding = MEDIA_MESH_NEAR_BINDING) readonly buffer MeshNear { uint meshNear[]; };
+#endif
 
 const float INNER = 0.5, OUTER = 0.9;  // the two rings of samples, in billboard half sizes
 
@@ -104,7 +109,7 @@ vec4 sourceThrough(vec3 point, GpuParticle particle, int index, int rank, out ve
 // A mesh crosses the particle where the nine rays' visibilities differ by more than this and the
 // occluder lies within half a radius of one of their shading points along the sun: the fragments
 // then take the visibility themselves (splat_source.glsl). A distant mesh's shadow edge stays in
-// the fit. The technique draws every particle within two radii of a mesh's box with that variant.
+// the fit. Only particles the technique draws with that variant (MeshNear) are flagged.
 const float CROSSED_VISIBILITY_SPREAD = 0.1;
 
 // How far in front of the closest approach along the centre ray the particle's light is seen (the
@@ -178,7 +183,7 @@ void main() {
             margin = min(margin, min(abs(sunInner[k].z), abs(sunOuter[k].z)));
         }
 #ifdef MEDIA_MESH_CROSSINGS
-        crossed = highest - lowest > CROSSED_VISIBILITY_SPREAD && margin < 0.5 * radius;
+        crossed = meshNear[index] != 0u && highest - lowest > CROSSED_VISIBILITY_SPREAD && margin < 0.5 * radius;
 #endif
         if (crossed) {  // fit the transmittance alone
             j0.a = sun0.y;

@@ -36,13 +36,24 @@ gpu::ProgramDesc particleLightingDesc(const LightingVariant& variant) {
 }
 
 void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
-                               std::size_t particles, const LightingVariant& variant, const FragmentLamps& lamps) {
+                               std::size_t particles, const LightingVariant& variant, const FragmentLamps& lamps,
+                               const std::vector<std::uint8_t>& nearMesh) {
     const gpu::Program& program = this->program(context, variant);
     // Sized from the set: the buffer fills when the upload pass runs.
     const std::size_t bytes = std::max<std::size_t>(particles, 1) * (variant.constant ? kSlotsPerConstantParticle : kSlotsPerParticle) * sizeof(glm::vec4);
     if (!light_ || capacity_ < bytes) {
         capacity_ = std::max(bytes, capacity_ * 3 / 2);
         light_ = gpu::createBuffer(capacity_, nullptr, 0);
+    }
+    if (variant.meshCrossings) {
+        nearStaging_.assign(nearMesh.begin(), nearMesh.end());
+        nearStaging_.resize(std::max<std::size_t>(particles, 1), 0u);
+        const std::size_t nearBytes = nearStaging_.size() * sizeof(std::uint32_t);
+        if (!nearMesh_ || nearCapacity_ < nearBytes) {
+            nearCapacity_ = std::max(nearBytes, nearCapacity_ * 3 / 2);
+            nearMesh_ = gpu::createBuffer(nearCapacity_, nullptr, GL_DYNAMIC_STORAGE_BIT);
+        }
+        glNamedBufferSubData(nearMesh_.id(), 0, static_cast<GLsizeiptr>(nearBytes), nearStaging_.data());
     }
     struct Data {
         gpu::ResourceHandle shadowMap, slices;
@@ -54,7 +65,8 @@ void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, cons
             if (context.slices.valid()) d.slices = builder.read(context.slices);
             builder.sideEffect();  // fills this pass's own buffer, which the splats read
         },
-        [this, &program, &context, &buffer, lamps](const gpu::PassResources& resources, const Data& d) {
+        [this, &program, &context, &buffer, lamps, crossings = variant.meshCrossings](const gpu::PassResources& resources,
+                                                                                     const Data& d) {
             const auto count = static_cast<GLuint>(buffer.count());
             glUseProgram(program.id());
             context.blocks->bind();
@@ -62,6 +74,7 @@ void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, cons
             buffer.bindOrder();
             buffer.bindLampNeighbourhoods();
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleLightBinding, light_.id());
+            if (crossings) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshNearBinding, nearMesh_.id());
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
             glProgramUniform1ui(program.id(), 0, count);

@@ -37,15 +37,17 @@ gpu::ProgramDesc particleLightingDesc(const LightingVariant& variant);
 class ParticleLightingPass {
 public:
     ParticleLightingPass();
+    // `nearMesh` (per particle): with variant.meshCrossings, the particles it may flag.
     void add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer, std::size_t particles,
-             const LightingVariant& variant, const FragmentLamps& lamps);
+             const LightingVariant& variant, const FragmentLamps& lamps, const std::vector<std::uint8_t>& nearMesh = {});
     void bind() const;  // the lighting buffer, for the splats
 
 private:
     const gpu::Program& program(const GraphFrame& context, const LightingVariant& variant);
     std::unique_ptr<LocalLightPrograms> programs_[8];  // by exact + 2·constant + 4·meshCrossings, built when first asked for
-    gpu::Buffer light_;
-    std::size_t capacity_ = 0;
+    gpu::Buffer light_, nearMesh_;
+    std::size_t capacity_ = 0, nearCapacity_ = 0;
+    std::vector<std::uint32_t> nearStaging_;
 };
 
 }  // namespace nimbus::media

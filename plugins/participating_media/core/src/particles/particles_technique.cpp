@@ -49,9 +49,9 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
 };
 
 // Balanced takes the sun's mesh visibility per fragment on the particles a mesh crosses
-// (splat_source.glsl), in runs of the draw order near a mesh. The lighting pass flags a particle
-// only where the occluder lies within half a radius of a shading point, so within 1.5 radii of its
-// centre: the runs reach two radii, so every flagged particle is drawn by the crossing variant.
+// (splat_source.glsl), in runs of the draw order near a mesh's box. The lighting pass flags a
+// particle only where the occluder lies within half a radius of a shading point, so within 1.5
+// radii of its centre: two radii leave room for the shadow map's texels.
 constexpr double kCrossingReach = 2.0;
 
 class ParticlesTechnique final : public MediaTechnique {
@@ -93,7 +93,7 @@ private:
         frame.report("constant_source", constant);
         frame.report("mesh_crossings", crossings);
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
-                           {.exact = exact, .constant = constant, .meshCrossings = crossings}, lamps);
+                           {.exact = exact, .constant = constant, .meshCrossings = crossings}, lamps, nearMesh);
         return splatPass_->add(graph, context, *shared.buffer, *lightingPass_,
                                {.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant}, std::move(nearMesh),
                                lamps, shared.target);

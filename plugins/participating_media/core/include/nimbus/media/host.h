@@ -85,9 +85,11 @@ struct HostFrame {
     // (`media_host_depth`) that re-encodes it as the plugin reads depth.
     DepthConvention depthConvention = DepthConvention::ReversedZ;
     const HostShadowMaps* shadows = nullptr;
-    // World boxes of the host's meshes: `blocks` mode shades the blocks they reach exactly, and the
-    // multiple-scattering model's environment is dark where one lies. Empty: the medium is taken
-    // as free of meshes (blocks: a seam may show where one is seen inside).
+    // World boxes of the host's meshes: `blocks` mode shades the blocks they reach exactly, the
+    // multiple-scattering model's environment is dark where one lies, and balanced `particles`
+    // takes the sun's mesh visibility per fragment on the particles near them (elsewhere it stays
+    // in the per-particle fit). Empty: the medium is taken as free of meshes (blocks: a seam may
+    // show where one is seen inside).
     std::vector<OccluderBox> occluders;
 };
 
