@@ -1,5 +1,6 @@
 #include "nimbus/media/host.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_access.hpp>
@@ -27,6 +28,22 @@ OccluderBox occluderBox(const glm::dmat4& world, const glm::dvec3& lo, const glm
         for (int k = 0; k < 3; ++k) box.half[k] = glm::dot(glm::abs(glm::row(linear, k)), localHalf);  // axis-aligned around it
     }
     return box;
+}
+
+double squaredDistance(const OccluderBox& box, const glm::dvec3& p) {
+    const glm::dvec3 d = p - box.centre;
+    double outside = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double excess = std::max(std::abs(glm::dot(d, box.axis[k])) - box.half[k], 0.0);
+        outside += excess * excess;
+    }
+    return outside;
+}
+
+glm::dvec3 axisAlignedHalf(const OccluderBox& box) {
+    glm::dvec3 hull(0.0);
+    for (int k = 0; k < 3; ++k) hull += glm::abs(box.axis[k]) * box.half[k];
+    return hull;
 }
 
 void LightSlices::bind(GLuint viewsBinding, GLuint slicesUnit) const {

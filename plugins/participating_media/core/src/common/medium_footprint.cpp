@@ -66,16 +66,19 @@ bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& li
 
 std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach) {
     std::vector<std::uint8_t> near(particles.size(), 0);
+    // Only meshes whose axis-aligned hull comes within reach of the particles' bounds are tested
+    // particle by particle (a level of many meshes around one cloud).
+    const Aabb bounds = particleBounds(particles);
+    const double maxRadius = particles.empty() ? 0.0 : *std::max_element(particles.radius.begin(), particles.radius.end());
+    const glm::dvec3 slack(std::max(reach - 1.0, 0.0) * maxRadius);
     for (const OccluderBox& box : meshes) {
+        const glm::dvec3 hull = axisAlignedHalf(box);
+        if (bounds.empty() || glm::any(glm::greaterThan(box.centre - hull, bounds.max + slack)) ||
+            glm::any(glm::lessThan(box.centre + hull, bounds.min - slack)))
+            continue;
         for (std::size_t i = 0; i < particles.size(); ++i) {
-            const glm::dvec3 d = particles.position[i] - box.centre;
-            double outside = 0.0;  // squared distance from the centre to the box
-            for (int k = 0; k < 3; ++k) {
-                const double excess = std::max(std::abs(glm::dot(d, box.axis[k])) - box.half[k], 0.0);
-                outside += excess * excess;
-            }
             const double r = reach * particles.radius[i];
-            if (outside < r * r) near[i] = 1;
+            if (squaredDistance(box, particles.position[i]) < r * r) near[i] = 1;
         }
     }
     return near;

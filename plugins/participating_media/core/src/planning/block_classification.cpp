@@ -22,8 +22,7 @@ std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, cons
     }
     std::vector<const OccluderBox*> candidates;
     for (const OccluderBox& box : meshes) {
-        glm::dvec3 hull(0.0);
-        for (int k = 0; k < 3; ++k) hull += glm::abs(box.axis[k]) * box.half[k];
+        const glm::dvec3 hull = axisAlignedHalf(box);
         if (glm::all(glm::lessThanEqual(box.centre - hull, hi)) && glm::all(glm::greaterThanEqual(box.centre + hull, lo)))
             candidates.push_back(&box);
     }
@@ -31,14 +30,7 @@ std::vector<std::uint8_t> blocksNearMeshes(const BlockPartition& partition, cons
         const Block& block = partition.blocks[b];
         const double reach = block.radius + block.meanParticleRadius;
         for (const OccluderBox* candidate : candidates) {
-            const OccluderBox& box = *candidate;
-            const glm::dvec3 d = block.centre - box.centre;
-            double outside = 0.0;  // squared distance from the centre to the box
-            for (int k = 0; k < 3; ++k) {
-                const double excess = std::max(std::abs(glm::dot(d, box.axis[k])) - box.half[k], 0.0);
-                outside += excess * excess;
-            }
-            if (outside <= reach * reach) {
+            if (squaredDistance(*candidate, block.centre) <= reach * reach) {
                 near[b] = 1;
                 break;
             }

@@ -60,6 +60,10 @@ struct OccluderBox {
     glm::dvec3 half{0.0};  // half extents along the axes
 };
 OccluderBox occluderBox(const glm::dmat4& world, const glm::dvec3& localMin, const glm::dvec3& localMax);
+// The squared distance from p to the box (0 inside it).
+double squaredDistance(const OccluderBox& box, const glm::dvec3& p);
+// The half extents of the axis-aligned box around it.
+glm::dvec3 axisAlignedHalf(const OccluderBox& box);
 
 // The optical model the medium follows (the scene's `scattering`, docs/scene-format.md §2): multiple
 // scattering (the plugin's approximation of light scattered any number of times, ambient an
