@@ -27,12 +27,6 @@ double splatFloor(ecs::App& app, int width, int height, int repeats) {
     return media->renderer->measureSplatFloor(render::makeView(state.lastInput.camera, width, height), repeats);
 }
 
-void renderFrame(ecs::App& app) {
-    app.runPhase(ecs::phases::kPrepare);
-    app.runPhase(ecs::phases::kRender);
-    app.runPhase(ecs::phases::kPresent);
-}
-
 }  // namespace
 
 std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, const std::vector<glm::dvec3>& lamps) {
@@ -83,13 +77,13 @@ std::vector<BenchResult> runSweep(Session& session, const std::vector<BenchConfi
         for (const auto& [key, value] : config.settings) settings.set(key, value, "bench");
         BenchResult r;
         r.config = config;
-        for (int i = 0; i < timing.warmup; ++i) renderFrame(app);
+        for (int i = 0; i < timing.warmup; ++i) app.redraw();
 
         std::vector<double> frames;
         for (int i = 0; i < timing.frames; ++i) {
             glFinish();
             const auto start = std::chrono::steady_clock::now();
-            renderFrame(app);
+            app.redraw();
             glFinish();
             frames.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         }
@@ -98,7 +92,7 @@ std::vector<BenchResult> runSweep(Session& session, const std::vector<BenchConfi
 
         gpu::GlPassTimer timer;
         request.timer = &timer;
-        for (int i = 0; i < timing.frames; ++i) renderFrame(app);
+        for (int i = 0; i < timing.frames; ++i) app.redraw();
         request.timer = nullptr;
         for (const auto& [pass, samples] : timer.samples()) {
             r.passMs[pass] = gpu::median(samples);

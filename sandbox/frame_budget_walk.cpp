@@ -63,15 +63,11 @@ BudgetChoice settleOnBudget(ecs::App& app, double budgetMs, int maxFrames) {
         if (budget.rung() != applied) {
             applied = budget.rung();
             applyRung(settings, media::ecs::kQualityLadder[applied], userKeys);
-            app.runPhase(ecs::phases::kPrepare);  // a new setting's first frame builds its programs: not timed
-            app.runPhase(ecs::phases::kRender);
-            app.runPhase(ecs::phases::kPresent);
+            app.redraw();  // a new setting's first frame builds its programs: not timed
         }
         glFinish();
         budget.beginFrame();
-        app.runPhase(ecs::phases::kPrepare);
-        app.runPhase(ecs::phases::kRender);
-        app.runPhase(ecs::phases::kPresent);
+        app.redraw();
         glFinish();
         budget.endFrame();
         ++choice.framesRendered;

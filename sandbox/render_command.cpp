@@ -72,29 +72,23 @@ assets::ToneCurve parseToneCurve(const std::string& text) {
     throwInputError("--tonemap", text, "", "unknown tone curve (known: none, filmic)");
 }
 
-void renderFrame(ecs::App& app) {
-    app.runPhase(ecs::phases::kPrepare);
-    app.runPhase(ecs::phases::kRender);
-    app.runPhase(ecs::phases::kPresent);
-}
-
 // The median frame over `frames` GPU-synchronised frames after a warm-up, then per-pass medians over
 // as many more, each pass synchronised (which inflates the total, so the two are measured apart).
 void measureFrames(ecs::App& app, int frames, nlohmann::json& stats) {
     using Clock = std::chrono::steady_clock;
-    for (int i = 0; i < 3; ++i) renderFrame(app);  // warm-up: shader compiles, pool fills
+    for (int i = 0; i < 3; ++i) app.redraw();  // warm-up: shader compiles, pool fills
     std::vector<double> ms;
     for (int i = 0; i < frames; ++i) {
         glFinish();
         const auto start = Clock::now();
-        renderFrame(app);
+        app.redraw();
         glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     }
     auto& request = app.resource<render::RenderRequest>();
     gpu::GlPassTimer timer;
     request.timer = &timer;
-    for (int i = 0; i < frames; ++i) renderFrame(app);
+    for (int i = 0; i < frames; ++i) app.redraw();
     request.timer = nullptr;
     nlohmann::json passes = nlohmann::json::object();
     for (const auto& [name, samples] : timer.samples()) passes[name] = gpu::median(samples);
@@ -173,7 +167,7 @@ int run(const RenderOptions& o) {
         stats["budget_ms"] = budgetMs;
         stats["chosen"] = choice.rung;
     }
-    renderFrame(app);
+    app.redraw();
     if (!o.stats.empty()) measureFrames(app, v.frames, stats);
     auto& state = app.resource<render::RendererState>();
     const assets::RgbImage image = state.renderer->readOutput();

@@ -102,9 +102,7 @@ void Session::renderFrame(int width, int height, const std::string& camera) {
     request.settings.width = width;
     request.settings.height = height;
     request.camera = camera;
-    app_->runPhase(ecs::phases::kPrepare);
-    app_->runPhase(ecs::phases::kRender);
-    app_->runPhase(ecs::phases::kPresent);
+    app_->redraw();
 }
 
 std::unique_ptr<ReferenceScene> makeReferenceScene(Session& session, const std::string& camera, int width, int height,

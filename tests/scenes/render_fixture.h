@@ -47,9 +47,7 @@ inline AppFrame renderThroughApp(std::shared_ptr<const assets::Scene> scene, int
     request.enabled = true;
     request.settings.width = width;
     request.settings.height = height;
-    app.runPhase(ecs::phases::kPrepare);
-    app.runPhase(ecs::phases::kRender);
-    app.runPhase(ecs::phases::kPresent);
+    app.redraw();
     const auto& state = app.resource<render::RendererState>();
     AppFrame frame;
     frame.image = state.renderer->readOutput();

@@ -63,4 +63,10 @@ void App::update(std::string_view lastPhase) {
 
 void App::runPhase(std::string_view phase) { scheduler_.runPhase(phase, world_); }
 
+void App::redraw() {
+    runPhase(phases::kPrepare);
+    runPhase(phases::kRender);
+    runPhase(phases::kPresent);
+}
+
 }  // namespace nimbus::ecs

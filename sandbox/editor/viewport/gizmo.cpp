@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "nimbus/base/camera_frame.h"
+#include "viewport/draw_list_points.h"
 #include "viewport/picking.h"
 
 namespace nimbus::sandbox::editor {
@@ -254,10 +255,6 @@ LocalTransform dragGizmo(GizmoMode mode, int axis, const assets::ResolvedCamera&
 namespace {
 
 constexpr float kHandleThickness = 3.0f;
-
-ImVec2 toImVec(glm::dvec2 origin, glm::dvec2 p) {
-    return ImVec2(static_cast<float>(origin.x + p.x), static_cast<float>(origin.y + p.y));
-}
 
 unsigned axisColour(int axis, bool highlighted) {
     if (highlighted) return IM_COL32(255, 215, 64, 255);

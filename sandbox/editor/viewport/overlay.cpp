@@ -8,16 +8,13 @@
 
 #include "nimbus/base/camera_frame.h"
 #include "viewport/gizmo.h"
+#include "viewport/draw_list_points.h"
 #include "viewport/picking.h"
 
 namespace nimbus::sandbox::editor {
 namespace {
 
 constexpr double kLightIconPixels = 7.0;
-
-ImVec2 toImVec(glm::dvec2 origin, glm::dvec2 p) {
-    return ImVec2(static_cast<float>(origin.x + p.x), static_cast<float>(origin.y + p.y));
-}
 
 // Liang-Barsky: keeps the part of a screen segment inside [lo, hi], so far-off ends keep float precision.
 bool clipToRect(glm::dvec2& a, glm::dvec2& b, glm::dvec2 lo, glm::dvec2 hi) {

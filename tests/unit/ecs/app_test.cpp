@@ -116,6 +116,10 @@ TEST(App, UpdateRunsPhasesAndStartupOnlyFirst) {
     app.runPhase(phases::kRender);
     EXPECT_EQ(ran, (std::vector<std::string>{"Render"}));
     EXPECT_EQ(app.frame(), 2u);  // a lone phase is not a frame
+    ran.clear();
+    app.redraw();
+    EXPECT_EQ(ran, (std::vector<std::string>{"Prepare", "Render", "Present"}));
+    EXPECT_EQ(app.frame(), 2u);  // nor is a redraw: no simulation, no clock
 }
 
 TEST(App, UpdateUpToAPhaseStopsThereAndAdvancesTheClock) {

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include <glm/gtx/component_wise.hpp>
+
 #include "light_transport.h"
 #include "medium_quadrature.h"
 #include "nimbus/assets/light_model.h"
@@ -25,7 +27,6 @@ namespace {
 
 constexpr int kTileSize = 16;
 
-double maxChannel(const glm::dvec3& v) { return std::max({v.x, v.y, v.z}); }
 
 // Per-thread working memory, reused from ray to ray.
 struct Scratch {
@@ -115,7 +116,7 @@ ReferenceRenderer::ReferenceRenderer(const ReferenceInputs& inputs, const Refere
     m.fogReach = assets::fogBackgroundDistance(inputs.scene->environment.fog, inputs.camera.params.zfar);
 
     // The scene's radiance scale, for the quadrature's absolute floor (reference_renderer.h).
-    double scale = std::max(maxChannel(m.background), maxChannel(m.ambient));
+    double scale = std::max(glm::compMax(m.background), glm::compMax(m.ambient));
     for (const glm::vec3& e : m.particles->emission) scale = std::max(scale, static_cast<double>(std::max({e.x, e.y, e.z})));
     glm::dvec3 centre(0.0);
     if (!m.bvh.empty()) {
@@ -124,7 +125,7 @@ ReferenceRenderer::ReferenceRenderer(const ReferenceInputs& inputs, const Refere
         centre = m.meshes->origin();
     }
     for (const assets::ResolvedLight& l : m.inputs.lights)
-        scale = std::max(scale, maxChannel(assets::sampleLight(l, centre).irradiance) / kPi);
+        scale = std::max(scale, glm::compMax(assets::sampleLight(l, centre).irradiance) / kPi);
     m.floor = settings.tolerance * 1e-3 * scale;
 }
 

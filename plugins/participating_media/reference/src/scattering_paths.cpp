@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/gtx/component_wise.hpp>
+
 #include "nimbus/media/optics.h"
 
 namespace nimbus::media::reference {
@@ -15,8 +17,6 @@ std::uint64_t splitMix(std::uint64_t& state) {
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
 }
-
-double maxChannel(const glm::dvec3& v) { return std::max({v.x, v.y, v.z}); }
 
 // An orthonormal basis around unit n (Duff et al., "Building an Orthonormal Basis, Revisited").
 void basisAround(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
@@ -106,7 +106,7 @@ PathSample ScatteringPaths::sample(const glm::dvec3& origin, const glm::dvec3& d
         out.vertices = vertex;
         weight *= v.albedo;
         if (vertex >= 2) out.radiance += weight * light_.directLight(v.position, v.arriving, v.phase, v.g);
-        if (!(maxChannel(weight) > 0.0)) break;
+        if (!(glm::compMax(weight) > 0.0)) break;
         const double u1 = random.uniform(), u2 = random.uniform();
         const glm::dvec3 next = samplePhaseDirection(v.phase, v.g, v.arriving, u1, u2);
         const auto hit = meshes_.closestHit(v.position, next, 0.0, std::numeric_limits<double>::infinity(), raycast::FaceCulling::None);
@@ -124,7 +124,7 @@ PathSample ScatteringPaths::sample(const glm::dvec3& origin, const glm::dvec3& d
         // Roulette only below kRouletteWeight, raising survivors to it: a path that merely left a
         // thin medium keeps its weight, and no weight exceeds 1. Past kRouletteCap vertices a path
         // at albedo 1 survives each vertex with 0.99 at most, so it ends too.
-        const double survive = std::min(vertex < kRouletteCap ? 1.0 : 0.99, maxChannel(weight) / kRouletteWeight);
+        const double survive = std::min(vertex < kRouletteCap ? 1.0 : 0.99, glm::compMax(weight) / kRouletteWeight);
         if (survive < 1.0) {
             if (!(random.uniform() < survive)) break;
             weight /= survive;

@@ -77,6 +77,9 @@ public:
     void update(std::string_view lastPhase);
     // Runs one phase alone (e.g. Render to redraw a paused scene); FrameInfo and frame() stay as they are.
     void runPhase(std::string_view phase);
+    // Prepare, Render and Present alone: draws the current state again (a timed frame, a new
+    // camera) without simulating or advancing the clock.
+    void redraw();
     std::uint64_t frame() const { return frame_; }  // updates completed
     double timeStep() const { return desc_.fixedTimeStep; }
 
