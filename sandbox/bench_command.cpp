@@ -1,4 +1,5 @@
 // sandbox bench SCENE [--out DIR] [--size WxH] [--time T] [--frames N] [--scaling] [--only NAME]...
+//                     [--scattering single|multiple]
 // docs/design.md §6: renders the reference once, then sweeps the settings that trade speed for error
 // (modes, slices, blocks, impostor resolution, instancing, media scale), measuring each one's
 // frame time (median of N GPU-synchronised frames, per pass), its error against the reference, and
@@ -42,6 +43,7 @@ struct BenchOptions {
     bool scaling = false;
     std::vector<std::string> only;
     std::string tolerance = "0.0001";
+    std::string scattering;  // empty: the scene's model
 };
 
 std::string isoDate() {
@@ -85,7 +87,9 @@ nlohmann::json runScaling(Session& session, const media::ParticleSet& sceneParti
     const glm::ivec2 sizes[] = {{320, 180}, {640, 360}, {1280, 720}};
     // The exact tier of every mode in the scaling sweep, and the default mode's fast tier.
     std::vector<std::pair<std::string, std::string>> tiers;
-    for (const media::TechniqueEntry& entry : media::builtInTechniques().entries())
+    // A named table: a range-for over a temporary's entries() would read a destroyed table.
+    const media::TechniqueTable techniques = media::builtInTechniques();
+    for (const media::TechniqueEntry& entry : techniques.entries())
         if (entry.scalingBench) tiers.emplace_back(entry.name, "mode=" + entry.name);
     tiers.emplace_back("fast", "quality=fast");
     constexpr double kBudgetMs = 8000.0;  // a setting whose 10× smaller case took a tenth of this is skipped
@@ -145,7 +149,9 @@ int run(const BenchOptions& o) {
     const int frames = parseCount(o.frames, "--frames", 20, 10000);
     const double tolerance = parsePositive(o.tolerance, "--tolerance", 0.1);
     std::unique_ptr<gpu::Context> context;  // outlives the session's GL objects
-    auto session = std::make_unique<Session>(SessionOptions{o.scene, parseTime(o.time), {}});
+    SessionOptions sessionOptions{.scene = o.scene, .time = parseTime(o.time)};
+    if (!o.scattering.empty()) sessionOptions.scattering = parseScattering(o.scattering);
+    auto session = std::make_unique<Session>(sessionOptions);
     context = gpu::Context::create();
 
     BenchRun run;
@@ -155,6 +161,7 @@ int run(const BenchOptions& o) {
     run.height = height;
     run.glRenderer = context->renderer();
     run.date = isoDate();
+    run.scattering = session->scene().environment.scattering == assets::Scattering::Single ? "single" : "multiple";
 
     const auto referenceStart = std::chrono::steady_clock::now();
     const auto reference = makeReferenceScene(*session, "", width, height);
@@ -183,8 +190,8 @@ int run(const BenchOptions& o) {
         throw SystemError("GL error during the benchmark: " + errors.first);
 
     const std::string plot = writeBenchFiles(run, o.out);
-    std::printf("bench %s: %dx%d, %zu particles, reference %.1f s, %s\n", o.scene.c_str(), width, height, run.particles,
-                run.referenceSeconds, run.glRenderer.c_str());
+    std::printf("bench %s: %dx%d, %zu particles, %s scattering, reference %.1f s, %s\n", o.scene.c_str(), width, height,
+                run.particles, run.scattering.c_str(), run.referenceSeconds, run.glRenderer.c_str());
     std::printf("%s", markdownTable(run).c_str());
     std::printf("wrote %s/bench.{json,csv,md}; %s\n", o.out.c_str(), plot.c_str());
     return 0;
@@ -203,6 +210,9 @@ CommandRunner addBenchCommand(CLI::App& app) {
     cmd->add_flag("--scaling", options->scaling, "also sweep particle count (1k..1M) and resolution");
     cmd->add_option("--only", options->only, "measure only these settings of the sweep (repeatable)");
     cmd->add_option("--tolerance", options->tolerance, "reference quadrature tolerance, in (0, 0.1]")->capture_default_str();
+    cmd->add_option("--scattering", options->scattering,
+                    "the optical model instead of the scene's: single or multiple (multiple's reference is Monte Carlo: "
+                    "its noise enters every row's error)");
     return [options] { return run(*options); };
 }
 

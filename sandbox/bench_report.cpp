@@ -40,6 +40,7 @@ nlohmann::json toJson(const BenchRun& run) {
     j["gl_renderer"] = run.glRenderer;
     j["date"] = run.date;
     j["reference_seconds"] = run.referenceSeconds;
+    j["scattering"] = run.scattering;
     j["results"] = nlohmann::json::array();
     for (const auto& r : run.results) {
         nlohmann::json row;

@@ -20,6 +20,7 @@ struct BenchRun {
     std::string glRenderer;
     std::string date;              // ISO 8601, UTC
     double referenceSeconds = 0.0;
+    std::string scattering;        // the optical model both the frames and the reference used
     std::vector<BenchResult> results;
     nlohmann::json scaling;        // --scaling: rows of {mode, particles, width, height, frame_ms}
 };

@@ -42,7 +42,9 @@ std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, cons
     for (const auto& rung : media::ecs::kQualityLadder)
         if (rung.tier != QualityTier::Exact) add(rung.name, rung.assignments());  // exact: the default mode's row
     add("fast slices=8", {{"quality", "fast"}, {"slices", "8"}});
-    for (const media::TechniqueEntry& entry : media::builtInTechniques().entries())
+    // A named table: a range-for over a temporary's entries() would read a destroyed table.
+    const media::TechniqueTable techniques = media::builtInTechniques();
+    for (const media::TechniqueEntry& entry : techniques.entries())
         if (entry.benchRows)
             for (media::BenchRow& row : entry.benchRows(particles, lamps)) add(std::move(row.name), std::move(row.settings));
     return sweep;

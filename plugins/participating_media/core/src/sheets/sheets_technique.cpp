@@ -1,6 +1,7 @@
 #include "sheets/sheets_technique.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 
 #include "common/shared_frame.h"
@@ -96,6 +97,22 @@ private:
     std::unique_ptr<SheetPass> sheetPass_;
 };
 
+// The tiers, a halved media target, and the spacing at twice and half the default's (one and a
+// quarter of the median radius), written in metres as a user would set it.
+std::vector<BenchRow> sheetBenchRows(const ParticleSet& particles, const std::vector<glm::dvec3>&) {
+    std::vector<BenchRow> rows{{"sheets", {{"mode", "sheets"}}},
+                               {"sheets quality=fast", {{"mode", "sheets"}, {"quality", "fast"}}},
+                               {"sheets media_scale=0.5", {{"mode", "sheets"}, {"media_scale", "0.5"}}}};
+    std::vector<float> scratch;
+    for (const double perRadius : {1.0, 0.25}) {
+        const double spacing = std::max(0.001, sheetSpacingFor(particles.radius, perRadius, scratch));  // the setting's minimum
+        char metres[32];
+        std::snprintf(metres, sizeof metres, "%.3g", spacing);
+        rows.push_back({std::string("sheets sheet_spacing=") + metres, {{"mode", "sheets"}, {"sheet_spacing", metres}}});
+    }
+    return rows;
+}
+
 }  // namespace
 
 SheetsSettings SheetsSettings::forTier(QualityTier tier) {
@@ -116,11 +133,7 @@ TechniqueEntry sheetsTechnique() {
             .settings = specsOf(kSheetsFields),
             .read = readerOf(kSheetsFields),
             .create = [] { return std::make_unique<SheetsTechnique>(); },
-            .benchRows = [](const ParticleSet&, const std::vector<glm::dvec3>&) {
-                return std::vector<BenchRow>{{"sheets", {{"mode", "sheets"}}},
-                                             {"sheets quality=fast", {{"mode", "sheets"}, {"quality", "fast"}}},
-                                             {"sheets media_scale=0.5", {{"mode", "sheets"}, {"media_scale", "0.5"}}}};
-            }};
+            .benchRows = sheetBenchRows};
 }
 
 }  // namespace nimbus::media
