@@ -261,12 +261,17 @@ def unseen_transformed_node():
     return b
 
 
+def thin_box(name, colour, translation, rotation, size):
+    """cloud_scene's `extra`: a double-sided box mesh node (material, node and mesh all `name`)."""
+    def add(b, rng):
+        material = b.material(name, colour, double_sided=True)
+        b.node(name, translation=translation, rotation=rotation, mesh=b.box_mesh(name, size, material))
+    return add
+
+
 def unseen_mesh_through_medium():
     """A thin tilted plate through a thick cloud: the mesh cuts the medium (soft particles)."""
-    def plate(b, rng):
-        red = b.material("plate", (0.8, 0.25, 0.15), double_sided=True)
-        b.node("plate", translation=(0.3, 2.1, 0.0), rotation=(0, 0, 0.0871557, 0.9961947),
-               mesh=b.box_mesh("plate", (6.0, 0.08, 1.6), red))
+    plate = thin_box("plate", (0.8, 0.25, 0.15), (0.3, 2.1, 0.0), (0, 0, 0.0871557, 0.9961947), (6.0, 0.08, 1.6))
     return cloud_scene("cloud", 115, 4.0, (0, 4.5, 8), (0, 2, 0), 300, (0, 2, 0), (2.5, 1.2, 2.0), (0.5, 1.0),
                        {"albedo": (0.95, 0.95, 0.95), "g": 0.5}, sun((0.35, -0.6, -0.72)), SKY, extra=plate)
 
@@ -310,10 +315,7 @@ def wing_through_cloud():
     and ahead: the wing cuts particles in two and shadows the half below it, so the band where
     the wing lies inside particles shows whether a renderer cuts a particle at the surface and keeps
     the light of its lit half from bleeding into its shadowed half (seam_band_test.cpp)."""
-    def wing(b, rng):
-        white = b.material("wing", (0.75, 0.75, 0.78), double_sided=True)
-        b.node("wing", translation=(0.0, 2.0, 0.2), rotation=(0, 0, 0.0523360, 0.9986295),
-               mesh=b.box_mesh("wing", (6.0, 0.04, 1.3), white))
+    wing = thin_box("wing", (0.75, 0.75, 0.78), (0.0, 2.0, 0.2), (0, 0, 0.0523360, 0.9986295), (6.0, 0.04, 1.3))
     return cloud_scene("cloud", 116, 3.0, (1.5, 3.4, 8.5), (0, 2, 0), 260, (0, 2, 0), (2.6, 1.3, 1.8), (0.45, 0.95),
                        {"albedo": (0.95, 0.95, 0.95), "g": 0.5}, sun((0.25, -0.85, -0.45)), SKY, extra=wing)
 

@@ -3,8 +3,6 @@
 // pre-integrated table (shaders/media/particle_splats.*). Blends exactly as ParticlePass does.
 #include "particles/particle_splat_pass.h"
 
-#include <algorithm>
-
 #include "common/kernel_table.h"
 #include "common/lit_media_inputs.h"
 #include "common/frame_blocks.h"
@@ -61,7 +59,7 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
                                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> nearMesh,
                                               const FragmentLamps& lamps, const MediaTarget& target) {
     variant.lamps = lamps.lamps[0] >= 0;
-    const bool crossings = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
+    const bool crossings = variant.meshCrossings;
     SplatVariant crossing = variant, plain = variant;
     crossing.meshCrossings = true;
     plain.meshCrossings = false;

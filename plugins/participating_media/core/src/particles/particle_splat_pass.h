@@ -35,8 +35,9 @@ std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const s
 class ParticleSplatPass {
 public:
     ParticleSplatPass();
-    // `nearMesh` (per particle, or empty): the particles drawn with the mesh-crossing variant, in
-    // runs of the draw order (splatRuns) found when the pass runs, after the sort.
+    // With variant.meshCrossings, `nearMesh` (per particle): the particles drawn with the
+    // mesh-crossing variant, in runs of the draw order (splatRuns) found when the pass runs, after
+    // the sort. Without it, every particle is drawn with the plain variant.
     gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
                                const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> nearMesh,
                                const FragmentLamps& lamps, const MediaTarget& target);

@@ -95,8 +95,8 @@ private:
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
                            {.exact = exact, .constant = constant, .meshCrossings = crossings}, lamps, nearMesh);
         return splatPass_->add(graph, context, *shared.buffer, *lightingPass_,
-                               {.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant}, std::move(nearMesh),
-                               lamps, shared.target);
+                               {.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings},
+                               std::move(nearMesh), lamps, shared.target);
     }
 
     gpu::ResourceHandle addPerFragment(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame,
