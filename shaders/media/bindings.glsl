@@ -41,4 +41,4 @@
 #define MEDIA_BLOCK_NEIGHBOURS_BINDING 10
 #define MEDIA_SLICE_PIECES_BINDING 11
 #define MEDIA_VOLUMES_BINDING 12
-#define MEDIA_MESH_NEAR_BINDING 13   // per particle: 1 near a mesh (particle_lighting.comp MEDIA_MESH_CROSSINGS)
+#define MEDIA_SPLAT_FLAGS_BINDING 13  // per particle: the splats' variant bits (particle_lighting.comp MEDIA_SPLAT_FLAGS)

@@ -20,8 +20,13 @@ const uint SUN_SLOT = 7u;
 layout(location = 7) uniform int uFragmentSun;
 layout(location = 8) uniform int uFragmentLamps[MAX_FRAGMENT_LAMPS];
 
+// Set by particle_lighting.comp per particle: no lamp lies near it, so the fit carries every lamp
+// and its fragments (drawn without MEDIA_FRAGMENT_LAMPS) evaluate none.
+bool gLampsInFit = false;
+
 bool litPerFragment(int light) {
     if (light == uFragmentSun) return true;
+    if (gLampsInFit) return false;
     for (int k = 0; k < MAX_FRAGMENT_LAMPS; ++k)
         if (uFragmentLamps[k] == light) return true;
     return false;

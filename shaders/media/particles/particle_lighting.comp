@@ -9,7 +9,8 @@
 // where a mesh crosses the particle, flagged by a negated sun factor: the fragments then take the
 // visibility over their own segment, as a smooth fit would carry light across the mesh). The
 // fragments multiply the sun's by its phase
-// function at their own ray (g = 0.99 peaks within a few pixels) and evaluate lamps themselves.
+// function at their own ray (g = 0.99 peaks within a few pixels) and evaluate the lamps near them
+// themselves (with MEDIA_SPLAT_FLAGS only where flagged; the fit takes the lamps of the others).
 // The odd cubic and even quartic terms follow a dense trail's sunward rim, which brightens sharply.
 // SPLAT_CONSTANT: the centre ray alone, for particles a few pixels wide (10⁶ of them).
 // LIGHTING_EXACT shades each ray as particles.frag shades a pixel; otherwise light is taken at the
@@ -33,10 +34,12 @@ layout(local_size_x = 64) in;
 layout(std430, binding = MEDIA_DRAW_ORDER_BINDING) readonly buffer DrawOrder { uint drawOrder[]; };
 layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) writeonly buffer ParticleLight { vec4 particleLight[]; };  // per rank: particle_light_layout.glsl
 layout(location = 0) uniform uint uCount;
-#ifdef MEDIA_MESH_CROSSINGS
-// Per particle index: 1 where the splats draw it with their mesh-crossing variant (the technique's
-// particlesNearMeshes), the only particles this pass may flag.
-layout(std430, binding = MEDIA_MESH_NEAR_BINDING) readonly buffer MeshNear { uint meshNear[]; };
+#ifdef MEDIA_SPLAT_FLAGS
+// Per particle index, the variant the splats draw it with (particle_splat_pass.h SplatFlag): bit 0
+// the mesh-crossing variant (the technique's particlesNearMeshes, the only particles this pass may
+// flag as crossed), bit 1 the fragment lamps (particlesNearLamps; without it the fit takes them).
+layout(std430, binding = MEDIA_SPLAT_FLAGS_BINDING) readonly buffer SplatFlags { uint splatFlags[]; };
+const uint SPLAT_NEAR_MESH = 1u, SPLAT_NEAR_LAMP = 2u;
 #endif
 
 const float INNER = 0.5, OUTER = 0.9;  // the two rings of samples, in billboard half sizes
@@ -156,6 +159,9 @@ void main() {
     if (rank >= uCount) return;
     int index = int(drawOrder[rank]);
     GpuParticle particle = particles[index];
+#ifdef MEDIA_SPLAT_FLAGS
+    gLampsInFit = (splatFlags[index] & SPLAT_NEAR_LAMP) == 0u;
+#endif
     vec3 centre = particle.positionRadius.xyz;
     float radius = particle.positionRadius.w;
     Billboard b = billboardOf(centre, radius);
@@ -183,7 +189,7 @@ void main() {
             margin = min(margin, min(abs(sunInner[k].z), abs(sunOuter[k].z)));
         }
 #ifdef MEDIA_MESH_CROSSINGS
-        crossed = meshNear[index] != 0u && highest - lowest > CROSSED_VISIBILITY_SPREAD && margin < 0.5 * radius;
+        crossed = (splatFlags[index] & SPLAT_NEAR_MESH) != 0u && highest - lowest > CROSSED_VISIBILITY_SPREAD && margin < 0.5 * radius;
 #endif
         if (crossed) {  // fit the transmittance alone
             j0.a = sun0.y;

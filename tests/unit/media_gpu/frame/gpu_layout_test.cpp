@@ -132,7 +132,7 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(storageBinding(composite.id(), "DrawOrder"), static_cast<GLint>(kDrawOrderBinding));
 
     const gpu::Program lighting = gpu::compileProgram(particleLightingDesc({.exact = true, .meshCrossings = true}));
-    EXPECT_EQ(storageBinding(lighting.id(), "MeshNear"), static_cast<GLint>(kMeshNearBinding));
+    EXPECT_EQ(storageBinding(lighting.id(), "SplatFlags"), static_cast<GLint>(kSplatFlagsBinding));
     EXPECT_EQ(storageBinding(lighting.id(), "ParticleLight"), static_cast<GLint>(kParticleLightBinding));
     const gpu::Program splats = gpu::compileProgram(particleSplatDesc({.lamps = true}));
     EXPECT_EQ(samplerUnit(splats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));

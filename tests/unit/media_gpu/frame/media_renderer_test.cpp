@@ -1,6 +1,6 @@
 // frame/media_settings.cpp's defaults, and common/medium_footprint.cpp: splatFootprint and automaticMediaScale,
-// what media_scale=auto is chosen from, and particlesNearMeshes, which particles balanced draws with the
-// mesh-crossing variant.
+// what media_scale=auto is chosen from, particlesNearMeshes, which particles balanced draws with the
+// mesh-crossing variant, and particlesNearLamps, which the splats draw with the fragment lamps.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,6 +69,38 @@ TEST(ParticlesNearMeshes, ATiltedThinBoxReachesOnlyTheSpheresWithinReach) {
     particles.push({0.5, 0.5, 1.0}, 0.2f, 1.0f, Medium{});  // on the plate's plane
     EXPECT_EQ(particlesNearMeshes({plate}, particles, 1.0), (std::vector<std::uint8_t>{0, 1}));
     EXPECT_EQ(particlesNearMeshes({}, particles, 1.0), (std::vector<std::uint8_t>{0, 0}));
+}
+
+TEST(ParticlesNearLamps, AParticleWithinReachOfAPointLight) {
+    ParticleSet particles;
+    particles.push({0.0, 0.0, 0.0}, 1.0f, 1.0f, Medium{});   // the lamp 1.5 radii away
+    particles.push({5.0, 0.0, 0.0}, 1.0f, 1.0f, Medium{});   // 3.5 radii away
+    particles.push({0.0, 0.0, 10.0}, 6.0f, 1.0f, Medium{});  // large: the lamp 1.8 of its radii away
+    Light point;
+    point.kind = gpu::LightKind::Point;
+    point.position = {1.5, 0.0, 0.0};
+    Light sun;
+    const std::vector<Light> lights{sun, point};
+    const int lamps[] = {1, -1};
+    EXPECT_EQ(particlesNearLamps(particles, lights, lamps, 2.0), (std::vector<std::uint8_t>{1, 0, 1}));
+    EXPECT_EQ(particlesNearLamps(particles, lights, lamps, 4.0), (std::vector<std::uint8_t>{1, 1, 1}));
+    const int none[] = {-1, 1};  // −1 ends the list
+    EXPECT_EQ(particlesNearLamps(particles, lights, none, 2.0), (std::vector<std::uint8_t>{0, 0, 0}));
+}
+
+TEST(ParticlesNearLamps, ASpotsConeEdgeCrossingASphereFarAway) {
+    Light spot;
+    spot.kind = gpu::LightKind::Spot;
+    spot.direction = {0.0, 0.0, -1.0};
+    spot.innerConeAngle = 0.2;
+    spot.outerConeAngle = 0.3;
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -20.0}, 1.0f, 1.0f, Medium{});                               // on the axis: inside the inner cone
+    particles.push({20.0 * std::tan(0.25), 0.0, -20.0}, 1.0f, 1.0f, Medium{});             // between the two angles
+    particles.push({20.0 * std::tan(0.32), 0.0, -20.0}, 1.0f, 1.0f, Medium{});             // just outside, its sphere across the edge
+    particles.push({20.0 * std::tan(0.8), 0.0, -20.0}, 1.0f, 1.0f, Medium{});              // far outside
+    const int lamps[] = {0, -1};
+    EXPECT_EQ(particlesNearLamps(particles, {spot}, lamps, 2.0), (std::vector<std::uint8_t>{0, 1, 1, 0}));
 }
 
 TEST(MediaRenderSettings, ZeroFieldsTakeTheirDefaultsAndChosenOnesStay) {

@@ -58,7 +58,8 @@ TEST_F(ShaderVariants, ParticleLighting) {
     for (bool exact : {false, true})
         for (bool constant : {false, true})
             for (bool crossings : {false, true})
-                addBothLightings(descs, particleLightingDesc({.exact = exact, .constant = constant, .meshCrossings = crossings}));
+                for (bool lampRuns : {false, true})
+                    addBothLightings(descs, particleLightingDesc({.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}));
     expectCompiles(descs);
 }
 

@@ -1,5 +1,5 @@
-// particles/particle_splat_pass.cpp: splatRuns, the runs of the draw order balanced draws with and
-// without the mesh-crossing variant.
+// particles/particle_splat_pass.cpp: splatRuns, the runs of the draw order the splats draw with and
+// without the mesh-crossing variant and the fragment lamps.
 #include <gtest/gtest.h>
 
 #include "particles/particle_splat_pass.h"
@@ -51,6 +51,24 @@ TEST(SplatRuns, EveryRankIsDrawnOnce) {
     }
     EXPECT_EQ(next, 100u);
     EXPECT_TRUE(splatRuns({}, {}).empty());
+}
+
+TEST(SplatRuns, TheLampBitSplitsRunsAndNeverJoins) {
+    // A particle drawn without the lamps has them in its fit: drawing it with them would count them twice.
+    constexpr std::uint8_t both = kSplatNearMesh | kSplatNearLamp;
+    const auto runs = splatRuns(identity(3), {both, kSplatNearMesh, both}, 8);
+    ASSERT_EQ(runs.size(), 3u);
+    EXPECT_TRUE(runs[0].lamps);
+    EXPECT_FALSE(runs[1].lamps);
+    EXPECT_TRUE(runs[1].meshCrossings);
+    EXPECT_TRUE(runs[2].lamps);
+    // A short gap without the mesh bit joins its crossing neighbours when its lamp bit is theirs.
+    const auto joined = splatRuns(identity(3), {both, kSplatNearLamp, both}, 8);
+    ASSERT_EQ(joined.size(), 1u);
+    EXPECT_TRUE(joined[0].meshCrossings);
+    EXPECT_TRUE(joined[0].lamps);
+    const auto apart = splatRuns(identity(3), {both, 0, both}, 8);
+    EXPECT_EQ(apart.size(), 3u) << "a gap without the lamps stays apart";
 }
 
 }  // namespace

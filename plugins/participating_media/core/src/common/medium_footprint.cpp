@@ -84,6 +84,28 @@ std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& me
     return near;
 }
 
+std::vector<std::uint8_t> particlesNearLamps(const ParticleSet& particles, const std::vector<Light>& lights, std::span<const int> lamps,
+                                             double reach) {
+    std::vector<std::uint8_t> near(particles.size(), 0);
+    for (const int index : lamps) {
+        if (index < 0) break;
+        const Light& lamp = lights[static_cast<std::size_t>(index)];
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            const glm::dvec3 toParticle = particles.position[i] - lamp.position;
+            const double d = glm::length(toParticle), r = particles.radius[i];
+            bool isNear = d < reach * r;
+            if (!isNear && lamp.kind == gpu::LightKind::Spot) {
+                // The angle of its centre off the axis, ± the angle its sphere spans from the lamp.
+                const double off = std::acos(std::clamp(glm::dot(toParticle / d, lamp.direction), -1.0, 1.0));
+                const double spans = std::asin(std::min(r / d, 1.0));
+                isNear = off + spans > lamp.innerConeAngle && off - spans < lamp.outerConeAngle;
+            }
+            if (isNear) near[i] = 1;
+        }
+    }
+    return near;
+}
+
 bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view) {
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const glm::dvec3 d = particles.position[i] - view.origin;

@@ -22,7 +22,7 @@ ParticleLightingPass::ParticleLightingPass() = default;
 
 const gpu::Program& ParticleLightingPass::program(const GraphFrame& context, const LightingVariant& variant) {
     std::unique_ptr<LocalLightPrograms>& p =
-        programs_[(variant.exact ? 1 : 0) + (variant.constant ? 2 : 0) + (variant.meshCrossings ? 4 : 0)];
+        programs_[(variant.exact ? 1 : 0) + (variant.constant ? 2 : 0) + (variant.meshCrossings ? 4 : 0) + (variant.lampRuns ? 8 : 0)];
     if (!p) p = std::make_unique<LocalLightPrograms>(particleLightingDesc(variant));
     return p->forLights(context.host.lights, context.multiple);
 }
@@ -32,12 +32,13 @@ gpu::ProgramDesc particleLightingDesc(const LightingVariant& variant) {
     if (variant.exact) desc.defines = {"LIGHTING_EXACT", "MEDIA_LAYER_LIGHT"};
     if (variant.constant) desc.defines.push_back("SPLAT_CONSTANT");
     if (variant.meshCrossings) desc.defines.push_back("MEDIA_MESH_CROSSINGS");
+    if (variant.meshCrossings || variant.lampRuns) desc.defines.push_back("MEDIA_SPLAT_FLAGS");
     return desc;
 }
 
 void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
                                std::size_t particles, const LightingVariant& variant, const FragmentLamps& lamps,
-                               const std::vector<std::uint8_t>& nearMesh) {
+                               const std::vector<std::uint8_t>& flags) {
     const gpu::Program& program = this->program(context, variant);
     // Sized from the set: the buffer fills when the upload pass runs.
     const std::size_t bytes = std::max<std::size_t>(particles, 1) * (variant.constant ? kSlotsPerConstantParticle : kSlotsPerParticle) * sizeof(glm::vec4);
@@ -45,15 +46,16 @@ void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, cons
         capacity_ = std::max(bytes, capacity_ * 3 / 2);
         light_ = gpu::createBuffer(capacity_, nullptr, 0);
     }
-    if (variant.meshCrossings) {
-        nearStaging_.assign(nearMesh.begin(), nearMesh.end());
-        nearStaging_.resize(std::max<std::size_t>(particles, 1), 0u);
-        const std::size_t nearBytes = nearStaging_.size() * sizeof(std::uint32_t);
-        if (!nearMesh_ || nearCapacity_ < nearBytes) {
-            nearCapacity_ = std::max(nearBytes, nearCapacity_ * 3 / 2);
-            nearMesh_ = gpu::createBuffer(nearCapacity_, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const bool withFlags = variant.meshCrossings || variant.lampRuns;
+    if (withFlags) {
+        flagsStaging_.assign(flags.begin(), flags.end());
+        flagsStaging_.resize(std::max<std::size_t>(particles, 1), 0u);
+        const std::size_t flagBytes = flagsStaging_.size() * sizeof(std::uint32_t);
+        if (!flags_ || flagsCapacity_ < flagBytes) {
+            flagsCapacity_ = std::max(flagBytes, flagsCapacity_ * 3 / 2);
+            flags_ = gpu::createBuffer(flagsCapacity_, nullptr, GL_DYNAMIC_STORAGE_BIT);
         }
-        glNamedBufferSubData(nearMesh_.id(), 0, static_cast<GLsizeiptr>(nearBytes), nearStaging_.data());
+        glNamedBufferSubData(flags_.id(), 0, static_cast<GLsizeiptr>(flagBytes), flagsStaging_.data());
     }
     struct Data {
         gpu::ResourceHandle shadowMap, slices;
@@ -65,8 +67,7 @@ void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, cons
             if (context.slices.valid()) d.slices = builder.read(context.slices);
             builder.sideEffect();  // fills this pass's own buffer, which the splats read
         },
-        [this, &program, &context, &buffer, lamps, crossings = variant.meshCrossings](const gpu::PassResources& resources,
-                                                                                     const Data& d) {
+        [this, &program, &context, &buffer, lamps, withFlags](const gpu::PassResources& resources, const Data& d) {
             const auto count = static_cast<GLuint>(buffer.count());
             glUseProgram(program.id());
             context.blocks->bind();
@@ -74,7 +75,7 @@ void ParticleLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, cons
             buffer.bindOrder();
             buffer.bindLampNeighbourhoods();
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kParticleLightBinding, light_.id());
-            if (crossings) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMeshNearBinding, nearMesh_.id());
+            if (withFlags) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplatFlagsBinding, flags_.id());
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
             if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
             glProgramUniform1ui(program.id(), 0, count);

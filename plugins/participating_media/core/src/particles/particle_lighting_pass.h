@@ -24,12 +24,18 @@ struct FragmentLamps {
 };
 FragmentLamps fragmentLamps(const std::vector<Light>& lights);
 
+// Per particle, the splat variant that draws it (particle_lighting.comp SplatFlags): near a mesh
+// (the mesh-crossing variant), near a fragment lamp (MEDIA_FRAGMENT_LAMPS; the fit takes the lamps
+// of the others).
+enum SplatFlag : std::uint8_t { kSplatNearMesh = 1, kSplatNearLamp = 2 };
+
 // Per-particle lighting (the fast tiers): each particle's source fitted over its billboard, in draw
 // order, from nine rays through it.
 struct LightingVariant {
     bool exact = false;          // each ray shaded as particles.frag shades a pixel
     bool constant = false;       // the centre ray alone, for particles a few pixels wide
     bool meshCrossings = false;  // flag the particles a mesh crosses, for the splats' MEDIA_MESH_CROSSINGS
+    bool lampRuns = false;       // the fragment lamps only on particles flagged kSplatNearLamp (else on all)
 };
 // The per-particle lighting program (particle_lighting.comp).
 gpu::ProgramDesc particleLightingDesc(const LightingVariant& variant);
@@ -37,17 +43,18 @@ gpu::ProgramDesc particleLightingDesc(const LightingVariant& variant);
 class ParticleLightingPass {
 public:
     ParticleLightingPass();
-    // `nearMesh` (per particle): with variant.meshCrossings, the particles it may flag.
+    // `flags` (per particle, SplatFlag bits): with variant.meshCrossings the particles it may flag as
+    // crossed, with variant.lampRuns those whose fragments evaluate the lamps.
     void add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer, std::size_t particles,
-             const LightingVariant& variant, const FragmentLamps& lamps, const std::vector<std::uint8_t>& nearMesh = {});
+             const LightingVariant& variant, const FragmentLamps& lamps, const std::vector<std::uint8_t>& flags = {});
     void bind() const;  // the lighting buffer, for the splats
 
 private:
     const gpu::Program& program(const GraphFrame& context, const LightingVariant& variant);
-    std::unique_ptr<LocalLightPrograms> programs_[8];  // by exact + 2·constant + 4·meshCrossings, built when first asked for
-    gpu::Buffer light_, nearMesh_;
-    std::size_t capacity_ = 0, nearCapacity_ = 0;
-    std::vector<std::uint32_t> nearStaging_;
+    std::unique_ptr<LocalLightPrograms> programs_[16];  // by exact + 2·constant + 4·meshCrossings + 8·lampRuns, built when first asked for
+    gpu::Buffer light_, flags_;
+    std::size_t capacity_ = 0, flagsCapacity_ = 0;
+    std::vector<std::uint32_t> flagsStaging_;
 };
 
 }  // namespace nimbus::media

@@ -35,35 +35,47 @@ gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant) {
     return desc;
 }
 
-std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& near, std::uint32_t minGap) {
+std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& flags, std::uint32_t minGap) {
     std::vector<SplatRun> runs;
     const auto count = static_cast<std::uint32_t>(order.size());
     for (std::uint32_t rank = 0; rank < count; ++rank) {
-        const bool crossing = near[order[rank]] != 0;
-        if (runs.empty() || runs.back().meshCrossings != crossing) runs.push_back({rank, 0, crossing});
+        const std::uint8_t f = flags[order[rank]];
+        const bool crossing = (f & kSplatNearMesh) != 0, lamps = (f & kSplatNearLamp) != 0;
+        if (runs.empty() || runs.back().meshCrossings != crossing || runs.back().lamps != lamps) runs.push_back({rank, 0, crossing, lamps});
         ++runs.back().count;
     }
-    // Join a short plain run between two crossing runs into one crossing run.
+    // Join a short plain run between two crossing runs of its own lamp bit into one crossing run.
     std::vector<SplatRun> joined;
     for (std::size_t i = 0; i < runs.size(); ++i) {
-        const bool shortGap = !runs[i].meshCrossings && runs[i].count < minGap && i > 0 && i + 1 < runs.size();
-        if ((shortGap || runs[i].meshCrossings) && !joined.empty() && joined.back().meshCrossings)
-            joined.back().count += runs[i].count;
+        const SplatRun& run = runs[i];
+        const bool bridge = !run.meshCrossings && run.count < minGap && i + 1 < runs.size() && runs[i + 1].meshCrossings &&
+                            runs[i + 1].lamps == run.lamps;
+        if ((bridge || run.meshCrossings) && !joined.empty() && joined.back().meshCrossings && joined.back().lamps == run.lamps)
+            joined.back().count += run.count;
         else
-            joined.push_back(runs[i]);
+            joined.push_back(run);
     }
     return joined;
 }
 
 gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
-                                              const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> nearMesh,
+                                              const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                               const FragmentLamps& lamps, const MediaTarget& target) {
-    variant.lamps = lamps.lamps[0] >= 0;
-    const bool crossings = variant.meshCrossings;
-    SplatVariant crossing = variant, plain = variant;
-    crossing.meshCrossings = true;
-    plain.meshCrossings = false;
-    const gpu::Program* programs[2] = {&program(plain), crossings ? &program(crossing) : nullptr};
+    const bool anyLamps = lamps.lamps[0] >= 0, crossings = variant.meshCrossings;
+    const auto everyParticle = static_cast<std::uint8_t>(anyLamps ? kSplatNearLamp : 0);  // without flags
+    // Bits that cannot take effect are dropped, so every run draws with a program built here.
+    const auto kept = static_cast<std::uint8_t>((crossings ? kSplatNearMesh : 0) | (anyLamps ? kSplatNearLamp : 0));
+    for (std::uint8_t& f : flags) f &= kept;
+    // By 2·crossing + lamps; the variants no flag asks for are not built.
+    const gpu::Program* programs[4] = {};
+    for (std::uint8_t f : flags.empty() ? std::vector<std::uint8_t>{everyParticle} : flags) {
+        const int k = ((f & kSplatNearMesh) != 0 ? 2 : 0) + ((f & kSplatNearLamp) != 0 ? 1 : 0);
+        if (programs[k] != nullptr) continue;
+        SplatVariant v = variant;
+        v.meshCrossings = (k & 2) != 0;
+        v.lamps = (k & 1) != 0;
+        programs[k] = &program(v);
+    }
     struct Data {
         gpu::ResourceHandle media, depth, slices, shadowMap;
     };
@@ -74,9 +86,9 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
             d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
             d.depth = builder.read(context.sceneDepth);
             if (lamps.lamps[0] >= 0 && context.slices.valid()) d.slices = builder.read(context.slices);
-            if ((variant.lamps || crossings) && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            if ((anyLamps || crossings) && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
         },
-        [this, programs, crossings, nearMesh = std::move(nearMesh), &context, &buffer, &lighting, lamps, w, h,
+        [this, programs, flags = std::move(flags), everyParticle, &context, &buffer, &lighting, lamps, w, h,
          scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
             const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
             context.blocks->bind();
@@ -96,10 +108,9 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
             gpu::applyPipeline(kMediaOver);
             glBindVertexArray(vertexArray_.id());
             // The order is known only now: the upload pass sorted it.
-            const std::vector<SplatRun> draws =
-                crossings ? splatRuns(buffer.order(), nearMesh) : std::vector<SplatRun>{{0, static_cast<std::uint32_t>(buffer.count()), false}};
-            for (const SplatRun& run : draws) {
-                const GLuint id = programs[run.meshCrossings ? 1 : 0]->id();
+            const std::vector<std::uint8_t> drawn = flags.empty() ? std::vector<std::uint8_t>(buffer.count(), everyParticle) : flags;
+            for (const SplatRun& run : splatRuns(buffer.order(), drawn)) {
+                const GLuint id = programs[(run.meshCrossings ? 2 : 0) + (run.lamps ? 1 : 0)]->id();
                 glUseProgram(id);
                 glProgramUniform1i(id, kFirstRankLocation, static_cast<GLint>(run.first));
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(run.count));

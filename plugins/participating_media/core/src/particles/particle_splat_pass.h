@@ -21,25 +21,30 @@ struct SplatVariant {
 // The splat program (particle_splats.*).
 gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant);
 
-// A run of consecutive draw ranks drawn with one program: the mesh-crossing variant or not.
+// A run of consecutive draw ranks drawn with one program: with the mesh-crossing variant or not,
+// with the fragment lamps or not.
 struct SplatRun {
     std::uint32_t first = 0, count = 0;
     bool meshCrossings = false;
+    bool lamps = false;
 };
-// The runs of `order` (particle index per rank) by `near` (per particle): the mesh-crossing variant
-// costs every fragment it draws, crossed or not (llvmpipe), so only the ranks near a mesh take it.
-// A gap of fewer than `minGap` ranks between two near runs joins them (a draw call each costs more).
-std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& near,
+// The runs of `order` (particle index per rank) by `flags` (per particle, SplatFlag bits): a
+// variant costs every fragment it draws, flagged or not (llvmpipe), so only the flagged ranks take
+// it. A gap of fewer than `minGap` ranks between two mesh-crossing runs joins them (a draw call each
+// costs more); the lamp bit never joins, as the lighting pass put the lamps of the particles
+// without it in their fit.
+std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& flags,
                                 std::uint32_t minGap = 8);
 
 class ParticleSplatPass {
 public:
     ParticleSplatPass();
-    // With variant.meshCrossings, `nearMesh` (per particle): the particles drawn with the
-    // mesh-crossing variant, in runs of the draw order (splatRuns) found when the pass runs, after
-    // the sort. Without it, every particle is drawn with the plain variant.
+    // `flags` (per particle, SplatFlag bits, as the lighting pass had them): the variant each
+    // particle is drawn with, in runs of the draw order (splatRuns) found when the pass runs, after
+    // the sort; the mesh-crossing bit counts with variant.meshCrossings, the lamp bit where there are
+    // fragment lamps. Empty: every particle with the lamps, none with the mesh-crossing variant.
     gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
-                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> nearMesh,
+                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                const FragmentLamps& lamps, const MediaTarget& target);
 
 private:

@@ -54,6 +54,24 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
 // radii of its centre: two radii leave room for the shadow map's texels.
 constexpr double kCrossingReach = 2.0;
 
+// Within this many radii of a point or spot light (or across a spot's cone edge) a particle's
+// fragments take its light (splat_source.glsl); the lighting pass's fit carries it for the others.
+// Beyond about 1.7 radii no ray through a particle passes within two deviations of the lamp, where
+// the fragments' near-field quadrature starts; campfire errs as before at 2, 22% more at 1.5
+// (docs/design-notes.md).
+constexpr double kLampReach = 2.0;
+
+// Per particle, the splat variant it is drawn with (SplatFlag bits). Lamps per fragment cost every
+// fragment of the particles drawn with them (llvmpipe), so only those near a lamp take them.
+std::vector<std::uint8_t> splatFlags(const std::vector<std::uint8_t>& nearMesh, const ParticleSet& particles,
+                                     const std::vector<Light>& lights, const FragmentLamps& lamps) {
+    std::vector<std::uint8_t> flags = lamps.lamps[0] >= 0 ? particlesNearLamps(particles, lights, lamps.lamps, kLampReach)
+                                                           : std::vector<std::uint8_t>(particles.size(), 0);
+    for (std::size_t i = 0; i < flags.size(); ++i)
+        flags[i] = static_cast<std::uint8_t>((flags[i] != 0 ? kSplatNearLamp : 0) | (i < nearMesh.size() && nearMesh[i] != 0 ? kSplatNearMesh : 0));
+    return flags;
+}
+
 class ParticlesTechnique final : public MediaTechnique {
 public:
     void upload(TechniqueFrame& frame, const GraphFrame& context) override {
@@ -89,14 +107,19 @@ private:
         if (exact && !constant && lamps.sun >= 0 && context.shadowMap.valid() && !context.host.occluders.empty())
             nearMesh = particlesNearMeshes(context.host.occluders, *frame.particles, kCrossingReach);
         const bool crossings = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
+        const bool lampRuns = lamps.lamps[0] >= 0;
+        std::vector<std::uint8_t> flags = splatFlags(nearMesh, *frame.particles, context.host.lights, lamps);
         frame.report("exact_lighting", false);
         frame.report("constant_source", constant);
         frame.report("mesh_crossings", crossings);
+        frame.report("lamp_particles", static_cast<long long>(std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) {
+                                           return (f & kSplatNearLamp) != 0;
+                                       })));
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
-                           {.exact = exact, .constant = constant, .meshCrossings = crossings}, lamps, nearMesh);
+                           {.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}, lamps, flags);
         return splatPass_->add(graph, context, *shared.buffer, *lightingPass_,
                                {.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings},
-                               std::move(nearMesh), lamps, shared.target);
+                               std::move(flags), lamps, shared.target);
     }
 
     gpu::ResourceHandle addPerFragment(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame,

@@ -56,7 +56,7 @@ inline constexpr GLuint kParticleLightBinding = 10;      // MEDIA_PARTICLE_LIGHT
 inline constexpr GLuint kBlockNeighboursBinding = 10;    // MEDIA_BLOCK_NEIGHBOURS_BINDING (blocks mode only)
 inline constexpr GLuint kSlicePiecesBinding = 11;        // MEDIA_SLICE_PIECES_BINDING
 inline constexpr GLuint kVolumesBinding = 12;            // MEDIA_VOLUMES_BINDING
-inline constexpr GLuint kMeshNearBinding = 13;           // MEDIA_MESH_NEAR_BINDING (balanced particles' mesh crossings)
+inline constexpr GLuint kSplatFlagsBinding = 13;         // MEDIA_SPLAT_FLAGS_BINDING (per-particle splat variants)
 
 // The MediaSliceViews uniform block.
 struct alignas(16) GpuSliceViews {

@@ -5,6 +5,7 @@
 //
 // Does not: touch the GPU.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "nimbus/base/aabb.h"
@@ -46,6 +47,13 @@ bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& li
 // Per particle (1/0): whether some mesh's box (HostFrame::occluders) comes within `reach` radii of
 // its centre (reach 1: into its sphere).
 std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach);
+
+// Per particle (1/0): whether one of the point or spot lights `lamps` (indices into `lights`; −1
+// ends the list) lies within `reach` radii of its centre, where its 1/d² changes across the
+// particle faster than a fit over the billboard follows, or whether a spot's cone edge (from the
+// inner to the outer angle) crosses its sphere.
+std::vector<std::uint8_t> particlesNearLamps(const ParticleSet& particles, const std::vector<Light>& lights, std::span<const int> lamps,
+                                             double reach);
 
 // Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
 bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view);
