@@ -1,5 +1,5 @@
 // sandbox bench SCENE [--out DIR] [--size WxH] [--time T] [--frames N] [--scaling] [--only NAME]...
-//                     [--scattering single|multiple]
+//                     [--scattering single|multiple] [--spp N]
 // docs/design.md §6: renders the reference once, then sweeps the settings that trade speed for error
 // (modes, slices, blocks, impostor resolution, instancing, media scale), measuring each one's
 // frame time (median of N GPU-synchronised frames, per pass), its error against the reference, and
@@ -26,6 +26,7 @@
 #include "nimbus/media/block_partition.h"
 #include "nimbus/media/ecs/media_plugin.h"
 #include "nimbus/media/media_renderer.h"
+#include "nimbus/media/reference/image_metrics.h"
 #include "nimbus/gpu/pass_timer.h"
 #include "nimbus/render/render_plugin.h"
 #include "nimbus/scene/scene_plugin.h"
@@ -44,7 +45,17 @@ struct BenchOptions {
     std::vector<std::string> only;
     std::string tolerance = "0.0001";
     std::string scattering;  // empty: the scene's model
+    int spp = 64;            // the multiple model's reference: paths per pixel
 };
+
+// The reference's own noise in the units of rel-RMSE: an image one standard error off in every
+// pixel, against the reference.
+double noiseRelRmse(const assets::RgbImage& standardError, const assets::RgbImage& image) {
+    assets::RgbImage offset = image;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) offset.set(x, y, image.at(x, y) + standardError.at(x, y));
+    return media::reference::compareImages(offset, image).relRmse;
+}
 
 std::string isoDate() {
     const std::time_t now = std::time(nullptr);
@@ -167,7 +178,8 @@ int run(const BenchOptions& o) {
     const auto reference = makeReferenceScene(*session, "", width, height);
     run.particles = reference->particles.size();
     // Every --only names a setting of the sweep, checked before the reference's minutes are spent.
-    std::vector<BenchConfig> configs = standardSweep(reference->particles, media::lampPositions(render::punctualLights(reference->inputs.lights)));
+    std::vector<BenchConfig> configs = standardSweep(reference->particles, media::lampPositions(render::punctualLights(reference->inputs.lights)),
+                                                     run.scattering == "multiple");
     for (const std::string& name : o.only)
         if (std::none_of(configs.begin(), configs.end(), [&](const BenchConfig& c) { return c.name == name; }))
             throwInputError("--only", name, "", "matches no setting of the sweep");
@@ -177,7 +189,15 @@ int run(const BenchOptions& o) {
     referenceSettings.width = width;
     referenceSettings.height = height;
     referenceSettings.tolerance = tolerance;
-    const assets::RgbImage referenceImage = media::reference::renderReference(reference->inputs, referenceSettings);
+    referenceSettings.spp = o.spp;
+    media::reference::ReferenceStats referenceStats;
+    assets::RgbImage standardError;
+    const assets::RgbImage referenceImage =
+        media::reference::renderReference(reference->inputs, referenceSettings, &referenceStats, &standardError);
+    if (referenceStats.multiple) {
+        run.referenceSpp = o.spp;
+        run.referenceNoise = noiseRelRmse(standardError, referenceImage);
+    }
     run.referenceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - referenceStart).count();
 
     {
@@ -213,6 +233,7 @@ CommandRunner addBenchCommand(CLI::App& app) {
     cmd->add_option("--scattering", options->scattering,
                     "the optical model instead of the scene's: single or multiple (multiple's reference is Monte Carlo: "
                     "its noise enters every row's error)");
+    cmd->add_option("--spp", options->spp, "multiple scattering: the reference's paths per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 20));
     return [options] { return run(*options); };
 }
 

@@ -41,6 +41,10 @@ nlohmann::json toJson(const BenchRun& run) {
     j["date"] = run.date;
     j["reference_seconds"] = run.referenceSeconds;
     j["scattering"] = run.scattering;
+    if (run.referenceSpp > 0) {
+        j["reference_spp"] = run.referenceSpp;
+        j["reference_noise_rel_rmse"] = run.referenceNoise;
+    }
     j["results"] = nlohmann::json::array();
     for (const auto& r : run.results) {
         nlohmann::json row;
@@ -69,6 +73,9 @@ nlohmann::json toJson(const BenchRun& run) {
 
 std::string markdownTable(const BenchRun& run) {
     std::ostringstream md;
+    if (run.referenceSpp > 0)
+        md << "Reference: Monte Carlo, " << run.referenceSpp << " paths per pixel; its noise, " << fixed(100.0 * run.referenceNoise, 2)
+           << "% rel-RMSE, is in every row's error (in quadrature).\n\n";
     md << "| setting | frame ms | media ms | × splat floor | rel-RMSE | PSNR dB | p99 abs | Pareto |\n";
     md << "|---|---:|---:|---:|---:|---:|---:|:-:|\n";
     for (const auto& r : run.results) {

@@ -21,6 +21,11 @@ struct BenchRun {
     std::string date;              // ISO 8601, UTC
     double referenceSeconds = 0.0;
     std::string scattering;        // the optical model both the frames and the reference used
+    // The multiple model's Monte Carlo reference: its paths per pixel, and its noise as rel-RMSE
+    // (the RMS of its per-pixel standard error over its mean luminance): every row's error holds it
+    // in quadrature, so a row near it is as good as the judge can tell. 0 for the single model.
+    int referenceSpp = 0;
+    double referenceNoise = 0.0;
     std::vector<BenchResult> results;
     nlohmann::json scaling;        // --scaling: rows of {mode, particles, width, height, frame_ms}
 };

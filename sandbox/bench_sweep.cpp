@@ -29,7 +29,7 @@ double splatFloor(ecs::App& app, int width, int height, int repeats) {
 
 }  // namespace
 
-std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, const std::vector<glm::dvec3>& lamps) {
+std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, const std::vector<glm::dvec3>& lamps, bool multiple) {
     std::vector<BenchConfig> sweep;
     auto add = [&](std::string name, std::vector<std::pair<std::string, std::string>> settings) {
         if (std::none_of(sweep.begin(), sweep.end(), [&](const BenchConfig& c) { return c.name == name; }))
@@ -42,6 +42,11 @@ std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, cons
     for (const auto& rung : media::ecs::kQualityLadder)
         if (rung.tier != QualityTier::Exact) add(rung.name, rung.assignments());  // exact: the default mode's row
     add("fast slices=8", {{"quality", "fast"}, {"slices", "8"}});
+    if (multiple) {  // the multiple model's own: its diffusion grid's voxels and relaxation sweeps
+        for (const char* voxels : {"16", "64"}) add(std::string("fast scattering_voxels=") + voxels, {{"quality", "fast"}, {"scattering_voxels", voxels}});
+        add("fast scattering_sweeps=8", {{"quality", "fast"}, {"scattering_sweeps", "8"}});
+        add("balanced scattering_voxels=64", {{"quality", "balanced"}, {"scattering_voxels", "64"}});
+    }
     // A named table: a range-for over a temporary's entries() would read a destroyed table.
     const media::TechniqueTable techniques = media::builtInTechniques();
     for (const media::TechniqueEntry& entry : techniques.entries())

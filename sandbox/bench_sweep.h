@@ -22,8 +22,9 @@ struct BenchConfig {
 
 // The sweep for a scene's particles: modes, slice counts, block counts around the automatic one,
 // impostor resolution, instancing and media scale. `lamps`: the scene's point and spot lights
-// (media::lampPositions), which the automatic block count looks at.
-std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, const std::vector<glm::dvec3>& lamps);
+// (media::lampPositions), which the automatic block count looks at. `multiple`: the session renders
+// the multiple-scattering model, whose own settings (the diffusion grid's voxels and sweeps) join.
+std::vector<BenchConfig> standardSweep(const media::ParticleSet& particles, const std::vector<glm::dvec3>& lamps, bool multiple);
 
 struct BenchResult {
     BenchConfig config;

@@ -2,7 +2,7 @@
 """Assembles docs/PERFORMANCE.md from the measurements scripts/bench just took.
 
 Usage: tools/make_performance_md.py BENCH_DIR DOCS_DIR
-       tools/make_performance_md.py --sweeps|--raymarch|--editor BENCH_DIR DOCS_DIR   (one section)
+       tools/make_performance_md.py --sweeps|--multiple|--raymarch|--editor BENCH_DIR DOCS_DIR   (one section)
 Every number in the page comes from BENCH_DIR; the prose around them only says what the numbers
 show (which setting is on the Pareto front, how cost grows), so the page stays true to the code.
 The sections this script does not generate (each names the script or test that measured it) are
@@ -352,6 +352,38 @@ def sweeps_section(bench_dir, docs_dir=None):
     return lines
 
 
+MULTIPLE_HEADING = "## Multiple scattering: sweeps against the multiple judge"
+
+
+def multiple_section(bench_dir, docs_dir):
+    """scripts/bench-multiple's runs: per scene the judge's paths and noise, the table, the chart
+    and the front, each row's error against the Monte Carlo reference of the multiple model."""
+    runs = {name: run for name, run in sweep_runs(bench_dir).items() if run.get("scattering") == "multiple"}
+    if not runs:
+        return []
+    lines = [MULTIPLE_HEADING, "",
+             "`scripts/bench-multiple` (measured %s): `sandbox bench --scattering multiple` on the content scenes whose judge "
+             "takes seconds, the frames and the reference both in the multiple model. The reference is Monte Carlo: its noise "
+             "(the RMS of its per-pixel standard error over its mean luminance, stated per scene) is in every row's error in "
+             "quadrature, so rows within it of each other are as good as the judge can tell. `scattering_voxels` and "
+             "`scattering_sweeps` are the model's own settings (the diffusion grid's resolution and relaxation sweeps per "
+             "frame); `billboards` stays the single-scattering yardstick." % max(run["date"][:10] for run in runs.values()), ""]
+    perf_dir = os.path.join(docs_dir, "perf")
+    for name, run in runs.items():
+        src = os.path.join(bench_dir, name, "bench.png")
+        chart = os.path.exists(src)
+        if chart:
+            os.makedirs(perf_dir, exist_ok=True)
+            shutil.copy(src, os.path.join(perf_dir, "multiple_" + name + ".png"))
+        lines += ["### %s (t = %g s, %d×%d, %d particles, reference %.1f s: %d paths per pixel, noise %s)" % (
+            os.path.basename(run["scene"]), run["time"], run["width"], run["height"], run["particles"],
+            run["reference_seconds"], run.get("reference_spp", 0), pct(run.get("reference_noise_rel_rmse"))), ""]
+        if chart:
+            lines += ["![time against error](perf/multiple_%s.png)" % name, ""]
+        lines += [table(run), "", pareto_advice(run), ""]
+    return lines
+
+
 EDITOR_HEADING = "## Editor viewport"
 
 
@@ -427,6 +459,8 @@ if __name__ == "__main__":
         replace_section(sys.argv[3], EDITOR_HEADING, editor_section(sys.argv[2]))
     elif sys.argv[1] == "--raymarch":
         replace_section(sys.argv[3], RAYMARCH_HEADING, raymarch_section(sys.argv[2]))
+    elif sys.argv[1] == "--multiple":
+        replace_section(sys.argv[3], MULTIPLE_HEADING, multiple_section(sys.argv[2], sys.argv[3]))
     elif sys.argv[1] == "--sweeps":
         replace_section(sys.argv[3], SWEEPS_HEADING, sweeps_section(sys.argv[2], sys.argv[3]))
     else:

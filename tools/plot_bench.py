@@ -17,8 +17,9 @@ def main(source, target):
     run = json.load(open(source))
     rows = [r for r in run["results"] if r["rel_rmse"] is not None]
     fig, ax = plt.subplots(figsize=(8, 5), dpi=110)
-    for mode, marker in (("particles", "o"), ("blocks", "s")):
-        pts = [r for r in rows if r["settings"].get("mode") == mode]
+    # Rows without a mode are the default mode's (the tiers and the budget's rungs).
+    for mode, marker in (("particles", "o"), ("blocks", "s"), ("raymarch", "^"), ("sheets", "D"), ("billboards", "x")):
+        pts = [r for r in rows if r["settings"].get("mode", "particles") == mode]
         ax.scatter([r["frame_ms"] for r in pts], [100 * r["rel_rmse"] for r in pts], marker=marker, label=mode,
                    alpha=0.8)
     front = sorted((r for r in rows if r["pareto"]), key=lambda r: r["frame_ms"])

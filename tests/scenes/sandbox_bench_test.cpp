@@ -1,6 +1,7 @@
 // `sandbox bench` run as a user runs it: the sweep holds every mode's rows, --only picks rows of
-// it, bench.json records each row's time and error and the optical model both sides used, and a
-// wrong row or model is refused in one line before the reference's work starts.
+// it, bench.json records each row's time and error and the optical model both sides used (with the
+// multiple model's Monte Carlo reference, its paths and noise), and a wrong row or model is refused
+// in one line before the reference's work starts.
 // Tiny images: this checks what the command does, not what it measures (scripts/bench does that).
 #include <gtest/gtest.h>
 
@@ -51,6 +52,25 @@ TEST(SandboxBench, OneRowOfEveryModeWithTheModelRecorded) {
     }
     EXPECT_EQ(seen, std::set<std::string>(rows.begin(), rows.end()));
     EXPECT_TRUE(anyOnFront) << "some row is always on the Pareto front";
+}
+
+TEST(SandboxBench, TheMultipleModelsReferenceStatesItsPathsAndNoise) {
+    TempFolder out;
+    const ProcessResult r = bench({"--scattering", "multiple", "--spp", "8", "--only", "fast"}, out.path());
+    ASSERT_EQ(r.exitCode, 0) << explain(r);
+    std::ifstream file(out.path() / "bench.json");
+    ASSERT_TRUE(file) << explain(r);
+    const nlohmann::json run = nlohmann::json::parse(file);
+    EXPECT_EQ(run["scattering"], "multiple");
+    EXPECT_EQ(run["reference_spp"], 8);
+    // Eight paths leave noise; the single model's reference (exact) states none.
+    EXPECT_GT(run["reference_noise_rel_rmse"].get<double>(), 0.0);
+    EXPECT_LT(run["reference_noise_rel_rmse"].get<double>(), 1.0);
+    EXPECT_NE(r.out.find("paths per pixel"), std::string::npos) << explain(r);
+    TempFolder single;
+    ASSERT_EQ(bench({"--scattering", "single", "--only", "fast"}, single.path()).exitCode, 0);
+    std::ifstream singleFile(single.path() / "bench.json");
+    EXPECT_FALSE(nlohmann::json::parse(singleFile).contains("reference_spp"));
 }
 
 TEST(SandboxBench, RefusesAnUnknownRowOrModelInOneLine) {
