@@ -71,6 +71,7 @@ TEST(SliceResolution, PutsTheAskedTexelsAcrossTheMedianRadius) {
     // 20 m / 1 m × 3 texels = 60 → the next multiple of 16.
     EXPECT_EQ(sliceResolutionFor(estimate, view, 3.0), 64);
     EXPECT_EQ(sliceResolutionFor(estimate, view, 0.25), 32) << "at least 32";
+    EXPECT_EQ(sliceResolutionFor(estimate, view, 0.25, 16), 16) << "at least the minimum asked for (a lamp's own views)";
     EXPECT_EQ(sliceResolutionFor(estimate, view, 16.0), 256) << "at most the fixed default";
     estimate.medianSpan = 0.0;
     EXPECT_EQ(sliceResolutionFor(estimate, view, 3.0), 256) << "no particles seen: the fixed default";

@@ -24,6 +24,10 @@ struct SliceView {
     glm::vec3 lightOrigin{0.0f};  // origin-relative light position (perspective views)
     int slices = 4;
     int firstLayer = 0;
+    // Texels per side this view's particles are drawn at (0: the slice array's). A lamp's cube
+    // faces may need fewer than the array holds for the sun; the light-slice pass draws them
+    // small and scales them up into their layers (light_slice_pass.cpp).
+    int resolution = 0;
 };
 
 struct SharedFrame {

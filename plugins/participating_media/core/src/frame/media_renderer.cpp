@@ -17,6 +17,10 @@ namespace nimbus::media {
 
 namespace {
 constexpr float kNegligibleRescatter = 0.01f;  // planScattering
+// A point or spot light's own views may take fewer texels than the array holds: inside the medium
+// its particles subtend tens of degrees, and campfire's lamp faces wanted 12 texels where the sun
+// wanted 48 (docs/design-notes.md).
+constexpr int kMinLampSliceResolution = 16;
 }  // namespace
 
 double MediaFrameStats::value(const std::string& key, double fallback) const {
@@ -154,9 +158,12 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
             const int slices = settings_.slices > 0 ? std::clamp(settings_.slices, kMinSlices, kMaxSlices) : estimate.slices;
             view.depthNear = static_cast<float>(estimate.depthNear);
             view.depthFar = static_cast<float>(estimate.depthFar);
-            if (settings_.sliceTexelsPerRadius > 0.0f)
+            int own = 0;  // the array's
+            if (settings_.sliceTexelsPerRadius > 0.0f) {
                 resolution = std::max(resolution, sliceResolutionFor(estimate, view, settings_.sliceTexelsPerRadius));
-            shared.sliceViews.push_back({view, glm::vec3(light.position - origin), slices, layers});
+                if (view.perspective) own = sliceResolutionFor(estimate, view, settings_.sliceTexelsPerRadius, kMinLampSliceResolution);
+            }
+            shared.sliceViews.push_back({view, glm::vec3(light.position - origin), slices, layers, own});
             layers += (slices + 3) / 4;
             stats_.slices = std::max(stats_.slices, slices);
         }

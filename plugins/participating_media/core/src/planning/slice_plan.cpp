@@ -108,13 +108,13 @@ SliceEstimate estimateSlices(const ParticleSet& particles, const std::vector<Vol
     return e;
 }
 
-int sliceResolutionFor(const SliceEstimate& estimate, const gpu::LightView& view, double texelsPerRadius) {
-    constexpr int kMin = 32, kMax = 256;
+int sliceResolutionFor(const SliceEstimate& estimate, const gpu::LightView& view, double texelsPerRadius, int minimum) {
+    constexpr int kMax = 256;
     if (!(estimate.medianSpan > 0.0)) return kMax;
     // The view spans 2·halfExtent (metres, or tan of the half angle) over its texels.
     const double wanted = 2.0 * static_cast<double>(std::max(view.halfExtent.x, view.halfExtent.y)) * texelsPerRadius / estimate.medianSpan;
     const int rounded = 16 * static_cast<int>(std::ceil(std::min(wanted, static_cast<double>(kMax)) / 16.0));
-    return std::clamp(rounded, kMin, kMax);
+    return std::clamp(rounded, minimum, kMax);
 }
 
 SlabRange particleSlabs(double depth, double radius, bool perspective, double depthNear, double depthFar, int slices) {

@@ -32,17 +32,38 @@ gpu::ResourceHandle LightSlicePass::add(gpu::FrameGraph& graph, const std::vecto
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glUseProgram(program_.id());
             buffer.bindParticles();
-            setAdditiveSliceState(resolution);
-            const GLuint program = program_.id();
-            for (const auto& v : views) {
-                bindSliceLayers(fbo.id(), resources.id(d.slices), v);
-                setParticleSliceUniforms(program, v, resolution);
-                glBindVertexArray(vertexArray_.id());
-                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
-                unbindSliceLayers(fbo.id(), v);
-            }
+            glBindVertexArray(vertexArray_.id());
+            for (const auto& v : views) drawView(fbo.id(), resources.id(d.slices), v, resolution, buffer);
         });
     return data.slices;
+}
+
+void LightSlicePass::drawView(GLuint framebuffer, GLuint slices, const SliceView& v, int resolution, const ParticleGpuBuffer& buffer) {
+    const int own = v.resolution > 0 ? std::min(v.resolution, resolution) : resolution;
+    const int layers = (v.slices + 3) / 4;
+    SliceView target = v;
+    GLuint texture = slices;
+    if (own < resolution) {  // drawn into the small array's first layers, then scaled up
+        if (!small_ || small_.desc().width != own || small_.desc().depth < layers)
+            small_ = gpu::Texture({GL_TEXTURE_2D_ARRAY, GL_RGBA32F, own, own, std::max(layers, small_ ? small_.desc().depth : 0), 1});
+        target.firstLayer = 0;
+        texture = small_.id();
+    }
+    bindSliceLayers(framebuffer, texture, target);
+    setAdditiveSliceState(own);
+    setParticleSliceUniforms(program_.id(), v, own);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
+    unbindSliceLayers(framebuffer, target);
+    if (own == resolution) return;
+    const gpu::Framebuffer source = gpu::createFramebuffer();
+    for (int a = 0; a < layers; ++a) {
+        glNamedFramebufferTextureLayer(source.id(), GL_COLOR_ATTACHMENT0, texture, 0, a);
+        glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT0, slices, 0, v.firstLayer + a);
+        glNamedFramebufferReadBuffer(source.id(), GL_COLOR_ATTACHMENT0);
+        glNamedFramebufferDrawBuffer(framebuffer, GL_COLOR_ATTACHMENT0);
+        glBlitNamedFramebuffer(source.id(), framebuffer, 0, 0, own, own, 0, 0, resolution, resolution, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    }
+    glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, 0, 0);
 }
 
 }  // namespace nimbus::media

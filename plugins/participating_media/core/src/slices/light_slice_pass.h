@@ -10,7 +10,10 @@
 namespace nimbus::media {
 
 // Light slices (docs/design.md §3 light-slice system): every slice view renders all particles once,
-// additively, into ceil(K/4) layers of one RGBA32F array.
+// additively, into ceil(K/4) layers of one RGBA32F array. A view whose SliceView::resolution is
+// below the array's is drawn at its own into a small array, then scaled up into its layers
+// (bilinear, as the slices are read): a fragment costs the same either way, and a lamp's cube faces
+// are covered by the particles around it.
 class LightSlicePass {
 public:
     LightSlicePass();
@@ -18,7 +21,9 @@ public:
                                const ParticleGpuBuffer& buffer);
 
 private:
+    void drawView(GLuint framebuffer, GLuint slices, const SliceView& view, int resolution, const ParticleGpuBuffer& buffer);
     gpu::Program program_;
+    gpu::Texture small_;  // the small views' layers before they are scaled up (resized as needed)
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();  // core profile: one must be bound
 };
 

@@ -33,9 +33,11 @@ struct SliceEstimate {
 };
 
 // The slice resolution that puts `texelsPerRadius` texels across the median particle's radius
-// (slice_resolution=auto), a multiple of 16 in [32, 256]: a lamp's cube faces need far fewer
+// (slice_resolution=auto), a multiple of 16 in [minimum, 256]: a lamp's cube faces need far fewer
 // texels than the fixed 256 where its particles subtend degrees.
-int sliceResolutionFor(const SliceEstimate& estimate, const gpu::LightView& view, double texelsPerRadius);
+inline constexpr int kMinSliceResolution = 32;
+int sliceResolutionFor(const SliceEstimate& estimate, const gpu::LightView& view, double texelsPerRadius,
+                       int minimum = kMinSliceResolution);
 
 // `view` is a light view of the medium; `origin` the frame origin its matrices are relative to.
 SliceEstimate estimateSlices(const ParticleSet& particles, const gpu::LightView& view, const glm::dvec3& origin);
