@@ -326,7 +326,8 @@ def sweeps_section(bench_dir, docs_dir=None):
     lines = [SWEEPS_HEADING, "",
              "`scripts/bench-sweeps` (measured %s): `sandbox bench` on every content scene with media, %s scattering for the frames and "
              "the reference alike. The sweeps rank each setting's own error; the multiple model's Monte Carlo reference would "
-             "add its noise to every row (each mode's error against it is in \"Multiple scattering and every mode\"). Rows "
+             "add its noise to every row (the multiple model's sweeps are in \"Multiple scattering: sweeps against the "
+             "multiple judge\"). Rows "
              "without a quality are the exact tier's; a scene whose table holds fewer rows swept the subset scripts/bench-sweeps "
              "gives it (its exact rows take seconds a frame). The table below says where the sheets and raymarch modes sit on each "
              "scene's front, counting errors within %d%% of each other as equal (so a slower row does not reach the front by "
@@ -336,18 +337,25 @@ def sweeps_section(bench_dir, docs_dir=None):
     for name, run in runs.items():
         lines.append("| %s | %s | %s |" % (name, family_place(run, "sheets"), family_place(run, "raymarch")))
     lines.append("")
+    return lines + scene_blocks(runs, bench_dir, docs_dir, "", lambda run: "%s scattering, reference %.1f s" % (
+        run.get("scattering", "single"), run["reference_seconds"]))
+
+
+def scene_blocks(runs, bench_dir, docs_dir, chart_prefix, reference_text):
+    """Per scene: a heading (its frame, and `reference_text(run)`), its chart copied into
+    DOCS_DIR/perf as CHART_PREFIX + name, its table and its front."""
+    lines = []
     perf_dir = os.path.join(docs_dir, "perf") if docs_dir else None
     for name, run in runs.items():
         src = os.path.join(bench_dir, name, "bench.png")
         chart = perf_dir is not None and os.path.exists(src)
         if chart:
             os.makedirs(perf_dir, exist_ok=True)
-            shutil.copy(src, os.path.join(perf_dir, name + ".png"))
-        lines += ["### %s (t = %g s, %d×%d, %d particles, %s scattering, reference %.1f s)" % (
-            os.path.basename(run["scene"]), run["time"], run["width"], run["height"], run["particles"],
-            run.get("scattering", "single"), run["reference_seconds"]), ""]
+            shutil.copy(src, os.path.join(perf_dir, chart_prefix + name + ".png"))
+        lines += ["### %s (t = %g s, %d×%d, %d particles, %s)" % (
+            os.path.basename(run["scene"]), run["time"], run["width"], run["height"], run["particles"], reference_text(run)), ""]
         if chart:
-            lines += ["![time against error](perf/%s.png)" % name, ""]
+            lines += ["![time against error](perf/%s%s.png)" % (chart_prefix, name), ""]
         lines += [table(run), "", pareto_advice(run), ""]
     return lines
 
@@ -368,20 +376,8 @@ def multiple_section(bench_dir, docs_dir):
              "quadrature, so rows within it of each other are as good as the judge can tell. `scattering_voxels` and "
              "`scattering_sweeps` are the model's own settings (the diffusion grid's resolution and relaxation sweeps per "
              "frame); `billboards` stays the single-scattering yardstick." % max(run["date"][:10] for run in runs.values()), ""]
-    perf_dir = os.path.join(docs_dir, "perf")
-    for name, run in runs.items():
-        src = os.path.join(bench_dir, name, "bench.png")
-        chart = os.path.exists(src)
-        if chart:
-            os.makedirs(perf_dir, exist_ok=True)
-            shutil.copy(src, os.path.join(perf_dir, "multiple_" + name + ".png"))
-        lines += ["### %s (t = %g s, %d×%d, %d particles, reference %.1f s: %d paths per pixel, noise %s)" % (
-            os.path.basename(run["scene"]), run["time"], run["width"], run["height"], run["particles"],
-            run["reference_seconds"], run.get("reference_spp", 0), pct(run.get("reference_noise_rel_rmse"))), ""]
-        if chart:
-            lines += ["![time against error](perf/multiple_%s.png)" % name, ""]
-        lines += [table(run), "", pareto_advice(run), ""]
-    return lines
+    return lines + scene_blocks(runs, bench_dir, docs_dir, "multiple_", lambda run: "reference %.1f s: %d paths per pixel, noise %s" % (
+        run["reference_seconds"], run.get("reference_spp", 0), pct(run.get("reference_noise_rel_rmse"))))
 
 
 EDITOR_HEADING = "## Editor viewport"

@@ -1,8 +1,8 @@
 // glTF materials rendered in real time against the judge (docs/scene-format.md §4.1): the content
 // scene courtyard.gltf (every feature beside smoke), a MetalRoughSpheres equivalent, and Khronos
-// BoxVertexColors, BoxTextured, TextureCoordinateTest and Duck. Both renderers share one Session (same load, same particles);
-// the medium is compared in the single-scattering model, so the judge is exact and the images
-// differ only by what the real-time approximations do.
+// BoxVertexColors, BoxTextured, TextureCoordinateTest and Duck. Both renderers share one Session
+// (same load, same particles); the medium is compared in the single-scattering model, so the judge
+// is exact and the images differ only by what the real-time approximations do.
 //
 // "Away from edges": a pixel is left out where the reference's 3×3 neighbourhood jumps by more
 // than half the larger luminance (a silhouette, a cutout's border, a shadow's edge: the
@@ -13,8 +13,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
-#include <vector>
 #include <limits>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 

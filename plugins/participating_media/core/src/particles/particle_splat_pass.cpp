@@ -62,20 +62,6 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
                                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                               const FragmentLamps& lamps, const MediaTarget& target) {
     const bool anyLamps = lamps.lamps[0] >= 0, crossings = variant.meshCrossings;
-    const auto everyParticle = static_cast<std::uint8_t>(anyLamps ? kSplatNearLamp : 0);  // without flags
-    // Bits that cannot take effect are dropped, so every run draws with a program built here.
-    const auto kept = static_cast<std::uint8_t>((crossings ? kSplatNearMesh : 0) | (anyLamps ? kSplatNearLamp : 0));
-    for (std::uint8_t& f : flags) f &= kept;
-    // By 2·crossing + lamps; the variants no flag asks for are not built.
-    const gpu::Program* programs[4] = {};
-    for (std::uint8_t f : flags.empty() ? std::vector<std::uint8_t>{everyParticle} : flags) {
-        const int k = ((f & kSplatNearMesh) != 0 ? 2 : 0) + ((f & kSplatNearLamp) != 0 ? 1 : 0);
-        if (programs[k] != nullptr) continue;
-        SplatVariant v = variant;
-        v.meshCrossings = (k & 2) != 0;
-        v.lamps = (k & 1) != 0;
-        programs[k] = &program(v);
-    }
     struct Data {
         gpu::ResourceHandle media, depth, slices, shadowMap;
     };
@@ -88,7 +74,7 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
             if (lamps.lamps[0] >= 0 && context.slices.valid()) d.slices = builder.read(context.slices);
             if ((anyLamps || crossings) && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
         },
-        [this, programs, flags = std::move(flags), everyParticle, &context, &buffer, &lighting, lamps, w, h,
+        [this, variant, flags = std::move(flags), &context, &buffer, &lighting, lamps, w, h,
          scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
             const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
             context.blocks->bind();
@@ -99,19 +85,18 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
             if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
-            for (const gpu::Program* program : programs) {
-                if (program == nullptr) continue;
-                glProgramUniform2f(program->id(), 1, scale.x, scale.y);
-                glProgramUniform1i(program->id(), kFragmentSunLocation, lamps.sun);
-                if (lamps.lamps[0] >= 0) glProgramUniform1iv(program->id(), kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
-            }
             gpu::applyPipeline(kMediaOver);
             glBindVertexArray(vertexArray_.id());
             // The order is known only now: the upload pass sorted it.
-            const std::vector<std::uint8_t> drawn = flags.empty() ? std::vector<std::uint8_t>(buffer.count(), everyParticle) : flags;
-            for (const SplatRun& run : splatRuns(buffer.order(), drawn)) {
-                const GLuint id = programs[(run.meshCrossings ? 2 : 0) + (run.lamps ? 1 : 0)]->id();
+            for (const SplatRun& run : splatRuns(buffer.order(), flags)) {
+                SplatVariant own = variant;
+                own.meshCrossings = run.meshCrossings;
+                own.lamps = run.lamps;
+                const GLuint id = program(own).id();
                 glUseProgram(id);
+                glProgramUniform2f(id, 1, scale.x, scale.y);
+                glProgramUniform1i(id, kFragmentSunLocation, lamps.sun);
+                if (run.lamps) glProgramUniform1iv(id, kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
                 glProgramUniform1i(id, kFirstRankLocation, static_cast<GLint>(run.first));
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(run.count));
             }

@@ -39,10 +39,10 @@ std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const s
 class ParticleSplatPass {
 public:
     ParticleSplatPass();
-    // `flags` (per particle, SplatFlag bits, as the lighting pass had them): the variant each
+    // `flags` (one per particle, SplatFlag bits, as the lighting pass had them): the variant each
     // particle is drawn with, in runs of the draw order (splatRuns) found when the pass runs, after
-    // the sort; the mesh-crossing bit counts with variant.meshCrossings, the lamp bit where there are
-    // fragment lamps. Empty: every particle with the lamps, none with the mesh-crossing variant.
+    // the sort. A mesh bit only with variant.meshCrossings, a lamp bit only with fragment lamps;
+    // each variant's program is built when a run first asks for it.
     gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
                                const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                const FragmentLamps& lamps, const MediaTarget& target);
