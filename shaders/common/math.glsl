@@ -5,6 +5,9 @@ const float INV_4PI = 0.07957747154594766788;
 
 float saturate(float x) { return clamp(x, 0.0, 1.0); }
 
+// Rec. 709 luminance of linear RGB (the weights the C++ side's kLuminanceWeights holds).
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
 // 1 − exp(−x) without cancellation for small x (opacity from optical depth).
 float oneMinusExpNeg(float x) {
     return x < 1e-3 ? x * (1.0 - x * (0.5 - x * (1.0 / 6.0))) : 1.0 - exp(-x);

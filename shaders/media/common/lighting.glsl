@@ -6,6 +6,7 @@
 #include "media/common/mesh_shadow.glsl"
 #include "media/common/lamp_neighbourhood.glsl"
 #include "media/common/multiple_scattering.glsl"
+#include "media/common/peak_orders.glsl"
 #include "media/common/own_optical_depth.glsl"
 
 // Bass and Anderson §III: instead of a lit/unlit test per pixel, compare the occluder depth the shadow map
@@ -51,11 +52,11 @@ float mediumMeshVisibility(int lightIndex, vec3 p, float softness) {
 vec3 scatteredLight(int i, vec3 p, vec3 viewDir, GpuParticle particle, float visibility, float transmittance) {
     LightSample s = sampleLight(i, p);
     if (all(lessThanEqual(s.irradiance, vec3(0.0)))) return vec3(0.0);
-    // θ between the light's travel direction (−toLight) and the direction to the camera (−viewDir).
-    float phase = phaseValue(particle.extra.x, particle.emissionG.w, s.toLight, viewDir);
     if (visibility < 0.0) visibility = mediumMeshVisibility(i, p, particle.positionRadius.w / 3.0);
     if (visibility <= 0.0) return vec3(0.0);
     if (transmittance < 0.0) transmittance = exp(-mediumOpticalDepth(i, p));
+    // θ between the light's travel direction (−toLight) and the direction to the camera (−viewDir).
+    float phase = litPhase(particle.extra.x, particle.emissionG.w, luminance(particle.albedoSigma.rgb), transmittance, s.toLight, viewDir);
     return phase * s.irradiance * (visibility * transmittance);
 }
 

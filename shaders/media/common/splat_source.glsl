@@ -80,6 +80,16 @@ float crossedSunVisibility(vec3 origin, vec3 dir, float tc, float beta2, float t
 }
 #endif
 
+// The sun's phase at this pixel's own ray (g = 0.99 peaks within a few pixels), with its forward
+// peak's orders in the multiple model (peak_orders.glsl) for the fitted transport e^−τ.
+float sunPhase(vec3 toLight, vec3 dir, float transport) {
+#ifdef MEDIA_MULTIPLE
+    return litPhase(vPhase.x, vPhase.y, vPeakAlbedo, transport, toLight, dir);
+#else
+    return phaseValue(vPhase.x, vPhase.y, toLight, dir);
+#endif
+}
+
 // tc: the ray's distance to its closest approach to the centre, perp the centre's offset from
 // it, beta (beta2) that offset (squared) in radii; tSurface: where the ray meets the scene;
 // alpha: the opacity of the particle's whole visible segment.
@@ -98,8 +108,8 @@ vec3 splatSource(vec3 origin, vec3 dir, float tc, vec3 perp, float beta, float b
     // loop's first pass runs under a mask whatever the lanes).
     if (vCrossed != 0) sunTransport *= crossedSunVisibility(origin, dir, tc, beta2, tSurface);
 #endif
-    if (uFragmentSun >= 0)  // the sun's phase at this pixel's own ray: g = 0.99 peaks within a few pixels
-        source += abs(vSun.rgb) * (phaseValue(vPhase.x, vPhase.y, -lights[uFragmentSun].direction.xyz, dir) * sunTransport);
+    if (uFragmentSun >= 0)
+        source += abs(vSun.rgb) * (sunPhase(-lights[uFragmentSun].direction.xyz, dir, sunTransport) * sunTransport);
 #ifdef MEDIA_FRAGMENT_LAMPS
     float h = sqrt(max(radius * radius - dot(perp, perp), 0.0));
     float lo = max(-h, -tc), hi = min(h, tSurface - tc);

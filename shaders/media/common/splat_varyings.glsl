@@ -15,6 +15,9 @@ flat SPLAT_VARYING int vCrossed;        // 1 where a mesh crosses the particle (
 #endif
 flat SPLAT_VARYING vec4 vSun;           // rgb: albedo × the sun's radiance, a: the centre ray's shading offset
 flat SPLAT_VARYING vec2 vPhase;         // phase function (0 HG, 1 Rayleigh), g
+#ifdef MEDIA_MULTIPLE
+flat SPLAT_VARYING float vPeakAlbedo;  // the albedo the sun's peak orders take (common/peak_orders.glsl)
+#endif
 #ifdef MEDIA_FRAGMENT_LAMPS
 flat SPLAT_VARYING vec3 vAlbedo;        // the lamps' light per fragment is scattered with it
 #endif

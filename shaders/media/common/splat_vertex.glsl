@@ -12,6 +12,9 @@ void splatVertex(int rank, vec2 corner) {
     vPhase = vec2(particle.extra.x, particle.emissionG.w);
     uint base = PARTICLE_LIGHT_STRIDE * uint(rank);
     vSun = particleLight[base + SUN_SLOT];
+#ifdef MEDIA_MULTIPLE
+    vPeakAlbedo = luminance(particle.albedoSigma.rgb);
+#endif
 #ifdef MEDIA_FRAGMENT_LAMPS
     vAlbedo = particle.albedoSigma.rgb;
 #endif

@@ -8,6 +8,7 @@
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "media/common/optics.glsl"
+#include "media/common/peak_orders.glsl"
 #include "media/common/kernel_table.glsl"
 #include "media/common/particle_light_layout.glsl"
 #if defined(MEDIA_FRAGMENT_LAMPS) || defined(MEDIA_MESH_CROSSINGS)

@@ -15,6 +15,7 @@
 #include "media/common/optics.glsl"
 #include "media/common/mesh_shadow.glsl"
 #include "media/common/multiple_scattering.glsl"
+#include "media/common/peak_orders.glsl"
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(binding = MEDIA_VOXEL_SCATTERING_UNIT) uniform sampler3D uScattering;  // rgb σ_t·albedo, a σ_t
@@ -41,13 +42,14 @@ vec2 gridInterval(vec3 origin, vec3 dir) {
 }
 
 // Σ_l p(θ) E_l V_mesh T_l at p, per unit albedo (lighting.glsl's scatteredLight for a voxel).
-vec3 lightAt(vec3 p, vec3 dir, float g) {
+vec3 lightAt(vec3 p, vec3 dir, float g, float albedo) {
     vec3 sum = vec3(0.0);
     int i = 0;
     if (frame.counts.x > 0) do {  // not for: llvmpipe runs a for loop's body once more, masked
         LightSample s = sampleLight(i, p);
-        float phase = phaseValue(float(uRayleigh), g, s.toLight, dir);
-        sum += phase * s.irradiance * (meshVisibilityTap(i, p, uVoxel) * exp(-mediumOpticalDepth(i, p)));
+        float transmittance = exp(-mediumOpticalDepth(i, p));
+        float phase = litPhase(float(uRayleigh), g, albedo, transmittance, s.toLight, dir);
+        sum += phase * s.irradiance * (meshVisibilityTap(i, p, uVoxel) * transmittance);
     } while (++i < frame.counts.x);
     return sum;
 }
@@ -86,7 +88,7 @@ void main() {
         if (!(a.w > 0.0)) continue;
         vec4 e = texture(uEmission, uvw);
         float g = clamp(e.w / a.w, -0.999, 0.999);
-        vec3 source = (a.rgb * (lightAt(p, dir, g) + ambientAt(p, dir, g)) + e.rgb) / a.w;  // J per unit optical depth
+        vec3 source = (a.rgb * (lightAt(p, dir, g, luminance(a.rgb) / a.w) + ambientAt(p, dir, g)) + e.rgb) / a.w;  // J per unit optical depth
         float alpha = oneMinusExpNeg(a.w * dt);
         radiance += transmittance * alpha * source;
         transmittance *= 1.0 - alpha;

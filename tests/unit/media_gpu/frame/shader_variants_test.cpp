@@ -69,14 +69,17 @@ TEST_F(ShaderVariants, ParticleSplats) {
         for (bool lamps : {false, true})
             for (bool constant : {false, true})
                 for (bool crossings : {false, true})
-                    descs.push_back(particleSplatDesc({.eyeInside = eyeInside, .lamps = lamps, .constant = constant, .meshCrossings = crossings}));
+                    for (bool multiple : {false, true})
+                        descs.push_back(particleSplatDesc(
+                            {.eyeInside = eyeInside, .lamps = lamps, .constant = constant, .meshCrossings = crossings, .multiple = multiple}));
     expectCompiles(descs);
 }
 
 TEST_F(ShaderVariants, SheetSplats) {
     std::vector<gpu::ProgramDesc> descs{sheetCompositeDesc()};
     for (bool lamps : {false, true})
-        for (bool constant : {false, true}) descs.push_back(sheetSplatDesc(lamps, constant));
+        for (bool constant : {false, true})
+            for (bool multiple : {false, true}) descs.push_back(sheetSplatDesc(lamps, constant, multiple));
     addBothLightings(descs, sheetExactDesc());
     expectCompiles(descs);
 }

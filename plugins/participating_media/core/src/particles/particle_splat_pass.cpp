@@ -21,7 +21,7 @@ ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 
 const gpu::Program& ParticleSplatPass::program(const SplatVariant& variant) {
     gpu::Program& p = programs_[(variant.eyeInside ? 1 : 0) + (variant.lamps ? 2 : 0) + (variant.constant ? 4 : 0) +
-                                (variant.meshCrossings ? 8 : 0)];
+                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0)];
     if (!p) p = gpu::compileProgram(particleSplatDesc(variant));
     return p;
 }
@@ -32,6 +32,7 @@ gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant) {
     if (variant.lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
     if (variant.constant) desc.defines.push_back("SPLAT_CONSTANT");
     if (variant.meshCrossings && !variant.constant) desc.defines.push_back("MEDIA_MESH_CROSSINGS");
+    if (variant.multiple) desc.defines.push_back("MEDIA_MULTIPLE");
     return desc;
 }
 
@@ -62,6 +63,7 @@ gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& c
                                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                               const FragmentLamps& lamps, const MediaTarget& target) {
     const bool anyLamps = lamps.lamps[0] >= 0, crossings = variant.meshCrossings;
+    variant.multiple = context.multiple;
     struct Data {
         gpu::ResourceHandle media, depth, slices, shadowMap;
     };

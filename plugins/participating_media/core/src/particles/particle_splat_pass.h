@@ -17,6 +17,7 @@ struct SplatVariant {
     bool lamps = false;          // point or spot lights per fragment (set by add from its lamps)
     bool constant = false;       // one ray per particle (LightingVariant::constant)
     bool meshCrossings = false;  // the sun's mesh visibility per fragment where the lighting pass flags a crossing
+    bool multiple = false;       // the multiple model: the sun's forward-peak orders (set by add from the frame)
 };
 // The splat program (particle_splats.*).
 gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant);
@@ -49,7 +50,7 @@ public:
 
 private:
     const gpu::Program& program(const SplatVariant& variant);
-    gpu::Program programs_[16];  // by eyeInside + 2·lamps + 4·constant + 8·meshCrossings, built when first asked for
+    gpu::Program programs_[32];  // by eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple, built when first asked for
     gpu::Texture kernelTable_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };

@@ -15,7 +15,7 @@
 namespace nimbus::media {
 
 // The sheet splat program: lamps per fragment, one ray per particle (as particleSplatDesc).
-gpu::ProgramDesc sheetSplatDesc(bool lamps, bool constant);
+gpu::ProgramDesc sheetSplatDesc(bool lamps, bool constant, bool multiple = false);
 // The exact tier's slab program (sheet_exact.*), lit per fragment; LocalLightPrograms adds its builds.
 gpu::ProgramDesc sheetExactDesc();
 gpu::ProgramDesc sheetCompositeDesc();
@@ -34,8 +34,8 @@ public:
                             const MediaTarget& target);
 
 private:
-    const gpu::Program& splatProgram(bool lamps, bool constant);
-    gpu::Program splatPrograms_[4];  // by lamps + 2·constant, built when first asked for
+    const gpu::Program& splatProgram(bool lamps, bool constant, bool multiple);
+    gpu::Program splatPrograms_[8];  // by lamps + 2·constant + 4·multiple, built when first asked for
     std::unique_ptr<LocalLightPrograms> exact_;  // built when first asked for
     gpu::Program composite_;
     gpu::Texture kernelTable_;
