@@ -4,7 +4,8 @@
 // The opaque pass drew into the output itself, and this pass blends over it (render/compose_pass.cpp:
 // src · 1 + dst · src.a, alpha kept), so it never reads the opaque image: on llvmpipe the blend's read
 // of the target costs less than a texture fetch. COMPOSE_LAYER: there is a layer; COMPOSE_UPSAMPLE:
-// at a reduced resolution, upsampled with depth awareness on the way (common/upsample.glsl).
+// at a reduced resolution, upsampled with depth awareness on the way (common/upsample.glsl);
+// COMPOSE_EDGES: with the layer's edges drawn at full resolution, taken where their alpha is ≥ 0.
 // COMPOSE_FOG: the opaque image (meshes and background) is seen through the scene's fog
 // (common/fog.glsl), f · opaque + (1 − f) · colour, folded into the blend's two terms; the layer was
 // fogged per particle. Output is linear.
@@ -26,6 +27,10 @@ layout(binding = 2) uniform sampler2D uDepthUsed;
 layout(location = 1) uniform vec2 uScale;       // reduced / full resolution per axis
 layout(location = 2) uniform float uThreshold;  // relative depth difference that marks an edge
 #endif
+#ifdef COMPOSE_EDGES
+layout(binding = 4) uniform sampler2D uEdges;
+layout(location = 3) uniform ivec4 uEdgeRect;  // the pixels uEdges covers: x, y, width, height
+#endif
 
 #ifdef COMPOSE_FOG
 // f over the distance z to what the pixel shows: the surface, or the fog's reach for the background.
@@ -45,6 +50,13 @@ void main() {
 #if defined(COMPOSE_UPSAMPLE)
     float depth = linearViewDepth(texelFetch(uSceneDepth, p, 0).r);
     vec4 layer = upsampleLayer(uLayer, uDepthUsed, gl_FragCoord.xy, uScale, depth, uThreshold);
+#ifdef COMPOSE_EDGES
+    ivec2 q = p - uEdgeRect.xy;
+    if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, uEdgeRect.zw))) {
+        vec4 edge = texelFetch(uEdges, q, 0);
+        if (edge.a >= 0.0) layer = edge;
+    }
+#endif
 #elif defined(COMPOSE_LAYER)
     vec4 layer = texelFetch(uLayer, p, 0);
 #else

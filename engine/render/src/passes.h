@@ -56,9 +56,11 @@ public:
     void add(FrameGraph& graph, FrameContext& context);
 
 private:
-    enum Variant { kLayer = 1, kUpsample = 2, kFog = 4 };
+    enum Variant { kLayer = 1, kUpsample = 2, kFog = 4, kEdges = 8 };
 
     const gpu::FullscreenPass& pass(int variant);  // compiled on first use
+    static void draw(const gpu::FullscreenPass& pass, int variant, GLuint framebuffer, glm::ivec2 size, glm::vec2 scale, float threshold,
+                     glm::ivec4 edgeRect);
 
     std::map<int, gpu::FullscreenPass> passes_;
     gpu::Sampler clampedNearest_;  // the upsampling gathers depths at the layer's edges

@@ -25,11 +25,12 @@
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(location = 1) uniform vec2 uFullResScale;
+layout(location = 13) uniform vec2 uFragOffset;  // the target's first pixel in the viewport (0 but for a rect of edges)
 
 layout(location = 0) out vec4 outColor;
 
 void main() {
-    vec2 fragCoord = gl_FragCoord.xy * uFullResScale;
+    vec2 fragCoord = gl_FragCoord.xy * uFullResScale + uFragOffset;
     vec3 origin, dir;
     cameraRay(fragCoord, origin, dir);
     vec3 oc = vCentreRadius.xyz - origin;

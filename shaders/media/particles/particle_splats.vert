@@ -16,7 +16,19 @@ layout(std430, binding = MEDIA_PARTICLE_LIGHT_BINDING) readonly buffer ParticleL
 #include "media/common/splat_vertex.glsl"
 
 layout(location = 12) uniform int uFirstRank;  // the draw's first rank: balanced draws runs by variant
+#ifdef SPLAT_RANK_LIST
+// The redraw at the edges (particle_splat_edges_pass.cpp) takes only the particles that reach them:
+// uFirstRank indexes this list of ranks.
+layout(std430, binding = MEDIA_SPLAT_RANKS_BINDING) readonly buffer SplatRanks { uint splatRanks[]; };
+#endif
 
 const vec2 kCorners[4] = vec2[](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
 
-void main() { splatVertex(uFirstRank + gl_InstanceID, kCorners[gl_VertexID]); }
+void main() {
+#ifdef SPLAT_RANK_LIST
+    int rank = int(splatRanks[uFirstRank + gl_InstanceID]);
+#else
+    int rank = uFirstRank + gl_InstanceID;
+#endif
+    splatVertex(rank, kCorners[gl_VertexID]);
+}

@@ -43,6 +43,10 @@ void Composer::compose(GLuint opaqueColor, GLuint sceneDepth, const gpu::View& v
         glProgramUniform1f(program_.id(), 2, layer->edgeThreshold);
         const glm::vec2 ab = standardDepth ? glm::vec2(view.znear, view.zfar) : view.depthLinearization();
         glProgramUniform4f(program_.id(), 3, ab.x, ab.y, view.orthographic ? 1.0f : 0.0f, standardDepth ? 1.0f : 0.0f);
+        // No edges: an empty rect, which no pixel is inside.
+        glBindTextureUnit(4, layer->edges);
+        const glm::ivec4 rect = layer->edges != 0 ? layer->edgeRect : glm::ivec4(0);
+        glProgramUniform4i(program_.id(), 4, rect.x, rect.y, rect.z, rect.w);
     }
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -11,12 +11,15 @@ namespace mini {
 
 // A media layer as the plugin returns it (nimbus::media::MediaLayer): rgb premultiplied in-scattered
 // radiance, a view transmittance; below the frame's size it comes with the view depth each texel
-// used, and is upsampled with depth awareness.
+// used, and is upsampled with depth awareness, except where its edges came drawn at full
+// resolution (within edgeRect, where their alpha is ≥ 0).
 struct MediaLayerRef {
     GLuint color = 0;
     int width = 0, height = 0;
     GLuint depthUsed = 0;
     float edgeThreshold = 0.2f;
+    GLuint edges = 0;
+    glm::ivec4 edgeRect{0};
 };
 
 class Composer {

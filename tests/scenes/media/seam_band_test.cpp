@@ -75,17 +75,31 @@ void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
 
 // Measured at 320x180 (single scattering), band of 2166 pixels: exact 0.54 %, hard-clipped 2.62 %,
 // balanced 0.85 % (1.61 % before balanced took the sun's mesh visibility per fragment on the
-// particles a mesh crosses), fast 4.26 %, blocks 0.86 % / 4.23 %. Fast's band error is its reduced
-// resolution's (media_scale auto) and its coarser slices': not yet the 1.5x exact. The
-// bounds below hold today's levels.
+// particles a mesh crosses), fast 2.87 % (4.26 % before its splats were drawn again at full
+// resolution at the reduced target's edges near the wing), blocks 0.86 % / 4.23 %. Fast at full
+// resolution errs 2.29 %: the rest is its per-particle fit and coarser slices, not yet the
+// issue's 1.5x exact. The bounds below hold today's levels.
 TEST_F(SeamBand, WingThroughCloud) {
-    expectLevels(measure(mediaScene("wing_through_cloud"), kSettings, kNames), {.balancedOverExact = 2.0, .blocksOverExact = 2.0, .fastBand = 0.06});
+    expectLevels(measure(mediaScene("wing_through_cloud"), kSettings, kNames), {.balancedOverExact = 2.0, .blocksOverExact = 2.0, .fastBand = 0.036});
 }
 
 // Measured at 320x180, band of 1184 pixels: exact 0.79 %, hard-clipped 2.49 %, balanced 0.95 %
-// (0.98 % before), fast 5.56 %, blocks 1.39 % / 5.33 %.
+// (0.98 % before), fast 3.17 % (5.56 % before the edges; 2.65 % at full resolution), blocks
+// 1.39 % / 5.33 %.
 TEST_F(SeamBand, CumulusAircraft) {
-    expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.balancedOverExact = 1.3, .blocksOverExact = 2.0, .fastBand = 0.07});
+    expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.balancedOverExact = 1.3, .blocksOverExact = 2.0, .fastBand = 0.04});
+}
+
+// Mixed resolution (fast tier, media_scale auto at ¼ here): the splats drawn again at full
+// resolution at the reduced image's edges near the wing take the band most of the way to the
+// full-resolution frame's error. Measured: 2.87 % with it, 4.26 % without, 2.29 % at full resolution.
+TEST_F(SeamBand, MixedResolutionRedrawsTheEdgesNearTheWing) {
+    const std::vector<BandErrors> e = measure(mediaScene("wing_through_cloud"),
+                                              {{"quality=fast"}, {"quality=fast", "mixed_resolution=off"}, {"quality=fast", "media_scale=1"}},
+                                              {"fast", "fast, mixed_resolution=off", "fast, media_scale=1"});
+    ASSERT_EQ(e.size(), 3u);
+    EXPECT_LE(e[0].band, 0.75 * e[1].band) << "the redraw removes a third of the band's error";
+    EXPECT_LE(e[0].band, 1.35 * e[2].band) << "and comes close to the full-resolution frame";
 }
 
 }  // namespace

@@ -44,7 +44,7 @@ void MediaRenderExtension::beforeOpaque(render::FrameGraph& graph, render::Frame
 void MediaRenderExtension::afterOpaque(render::FrameGraph& graph, render::FrameContext& context) {
     frame_.sceneDepth = context.sceneDepth;
     renderer_.addMedia(graph, frame_);
-    if (frame_.color.valid()) context.overlay = {frame_.color, frame_.depthUsed, frame_.edgeThreshold};
+    if (frame_.color.valid()) context.overlay = {frame_.color, frame_.depthUsed, frame_.edges, frame_.edgeRect, frame_.edgeThreshold};
 }
 
 }  // namespace nimbus::media

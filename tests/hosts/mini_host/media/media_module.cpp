@@ -126,7 +126,7 @@ void installHooks(ecs::World& world) {
         if (state.empty()) return MediaLayerRef{};
         state.frame.sceneDepth = meshes.sceneDepth();
         const media::MediaLayer layer = state.renderer->renderMedia(state.frame);
-        return MediaLayerRef{layer.color, layer.size.x, layer.size.y, layer.depthUsed, layer.edgeThreshold};
+        return MediaLayerRef{layer.color, layer.size.x, layer.size.y, layer.depthUsed, layer.edgeThreshold, layer.edges, layer.edgeRect};
     };
     world.set(std::move(hooks));
 }

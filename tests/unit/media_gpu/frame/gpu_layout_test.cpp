@@ -174,6 +174,9 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(samplerUnit(hostDepth.id(), "uHostDepth"), static_cast<GLint>(kHostDepthUnit));
     const gpu::Program stencil = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/blocks/block_seam_stencil.frag"});
     EXPECT_EQ(samplerUnit(stencil.id(), "uSeamMask"), static_cast<GLint>(kSeamMaskUnit));
+    const gpu::Program edges = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/upsample/edge_stencil.frag"});
+    EXPECT_EQ(samplerUnit(edges.id(), "uDepthUsed"), static_cast<GLint>(kDepthUsedUnit));
+    EXPECT_EQ(samplerUnit(edges.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
     EXPECT_EQ(storageBinding(composite.id(), "BlockNeighbours"), static_cast<GLint>(kBlockNeighboursBinding));
 }
 

@@ -1,6 +1,7 @@
 // frame/media_settings.cpp's defaults, and common/medium_footprint.cpp: splatFootprint and automaticMediaScale,
 // what media_scale=auto is chosen from, particlesNearMeshes, which particles balanced draws with the
-// mesh-crossing variant, and particlesNearLamps, which the splats draw with the fragment lamps.
+// mesh-crossing variant, particlesNearLamps, which the splats draw with the fragment lamps, and the
+// rects the fast tier draws its edges again within (billboardRect, nearMeshRect, intersectRects).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,6 +70,50 @@ TEST(ParticlesNearMeshes, ATiltedThinBoxReachesOnlyTheSpheresWithinReach) {
     particles.push({0.5, 0.5, 1.0}, 0.2f, 1.0f, Medium{});  // on the plate's plane
     EXPECT_EQ(particlesNearMeshes({plate}, particles, 1.0), (std::vector<std::uint8_t>{0, 1}));
     EXPECT_EQ(particlesNearMeshes({}, particles, 1.0), (std::vector<std::uint8_t>{0, 0}));
+}
+
+TEST(BillboardRect, BoundsTheFlaggedSpheresOnScreen) {
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});  // its sphere spans 10.05 px each way from the centre (100, 50)
+    particles.push({5.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});  // 50 px to the right, not flagged
+    const glm::ivec4 rect = billboardRect(particles, {1, 0}, testView(), 0);
+    EXPECT_LE(rect.x, 89);
+    EXPECT_GE(rect.x, 87);
+    EXPECT_LE(rect.y, 39);
+    EXPECT_GE(rect.y, 37);
+    EXPECT_GE(rect.x + rect.z, 111);
+    EXPECT_LE(rect.x + rect.z, 113);
+    EXPECT_GE(rect.y + rect.w, 61);
+    EXPECT_LE(rect.y + rect.w, 63);
+    EXPECT_EQ(billboardRect(particles, {1, 0}, testView(), 4), rect + glm::ivec4(-4, -4, 8, 8)) << "grown by the margin";
+    EXPECT_EQ(billboardRect(particles, {0, 0}, testView(), 4).z, 0) << "none flagged";
+}
+
+TEST(BillboardRect, ASphereAroundTheEyeTakesTheView) {
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -0.5}, 1.0f, 1.0f, Medium{});
+    EXPECT_EQ(billboardRect(particles, {1}, testView(), 2), glm::ivec4(0, 0, 200, 100));
+}
+
+TEST(NearMeshRect, OnlyTheBoxesWithinReachOfAParticle) {
+    const gpu::View view = gpu::makePerspectiveView({}, 2.0 * std::atan(0.5), 0.1, 0.0, 200, 100);
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});
+    OccluderBox inside, far;
+    inside.centre = {0.5, 0.0, -10.0};
+    inside.half = {1.0, 0.1, 0.1};  // from x −0.5 to 1.5 at depth 10: pixels 95..115, the sphere's 88..112
+    far.centre = {-8.0, 0.0, -10.0};
+    far.half = {0.5, 0.5, 0.5};
+    const glm::ivec4 rect = nearMeshRect({inside, far}, particles, 2.0, view, 0);
+    EXPECT_NEAR(rect.x, 94, 1);
+    EXPECT_NEAR(rect.x + rect.z, 112, 1) << "where the box and its near particles meet";
+    EXPECT_EQ(nearMeshRect({far}, particles, 2.0, view, 0).z, 0) << "8 radii away";
+}
+
+TEST(IntersectRects, TheSharedPixelsOrNone) {
+    EXPECT_EQ(intersectRects({0, 0, 10, 10}, {5, 2, 10, 4}), glm::ivec4(5, 2, 5, 4));
+    EXPECT_EQ(intersectRects({0, 0, 10, 10}, {10, 0, 5, 5}).z, 0);
+    EXPECT_EQ(intersectRects({0, 0, 10, 10}, glm::ivec4(0)).z, 0);
 }
 
 TEST(ParticlesNearLamps, AParticleWithinReachOfAPointLight) {

@@ -53,6 +53,8 @@ struct FrameInput {
 struct TranslucentLayer {
     ResourceHandle color;      // invalid: no layer this frame
     ResourceHandle depthUsed;  // R32F view depth per texel; invalid: full resolution
+    ResourceHandle edges;      // mixed resolution: full-resolution texels of edgeRect, taken where alpha ≥ 0; invalid: none
+    glm::ivec4 edgeRect{0};    // x, y (window pixels from the lower left), width, height
     float edgeThreshold = 0.2f;  // relative depth difference the upsampling treats as an edge
 };
 

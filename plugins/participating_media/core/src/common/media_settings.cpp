@@ -31,7 +31,6 @@ void setSliceDetail(MediaRenderSettings& s, const SettingValue& v) {
 
 bool sliceResolutionAuto(const MediaRenderSettings& s) { return s.sliceTexelsPerRadius > 0.0f; }
 // The upsampler runs only where the media pass is smaller than the frame.
-bool mediaOffscreen(const MediaRenderSettings& s) { return s.mediaScaleAuto || (s.mediaScale > 0.0f && s.mediaScale < 1.0f); }
 
 enum class Acts { Everywhere, LitBySlices, SliceDeposit, MultipleScattering };
 
@@ -78,10 +77,12 @@ const SharedField kSharedFields[] = {
        .defaultValue = "1 (fast: auto)"},
       &setMediaScale},
      Acts::Everywhere},
-    {{{.key = "upsample_threshold", .help = "offscreen media: relative depth difference the upsampling treats as an edge",
+    {{{.key = "upsample_threshold",
+       .help = "offscreen media: relative depth difference the upsampling treats as an edge (where a mesh reaches into the "
+               "medium, the per-particle tiers draw their particles there again at full resolution)",
        .type = SettingType::Number, .min = 1e-4, .max = 10.0, .defaultValue = "0.2",
        .actsWhen = "with media_scale below 1 or auto"},
-      &setNumber<&MediaRenderSettings::upsampleThreshold>, &mediaOffscreen},
+      &setNumber<&MediaRenderSettings::upsampleThreshold>, &offscreenMedia},
      Acts::Everywhere},
     {{{.key = "scattering_voxels", .help = "multiple scattering: voxels of the grid its scattered light diffuses on, along the medium's longest side",
        .type = SettingType::Integer, .min = 4, .max = 128, .defaultValue = std::to_string(kDefaultScatteringVoxels),
@@ -199,7 +200,7 @@ std::vector<IdleSetting> idleSettings(const Settings& settings, const TechniqueT
     for (const SharedField& shared : kSharedFields)
         if (shared.field.acts != nullptr && !shared.field.acts(s)) idleKeys.push_back(shared.field.spec.key);
     if (entry.idle) {
-        const std::vector<std::string> own = entry.idle(s.technique);
+        const std::vector<std::string> own = entry.idle(s.technique, s);
         idleKeys.insert(idleKeys.end(), own.begin(), own.end());
     }
     for (const SettingSpec& spec : settings.declarations()) {

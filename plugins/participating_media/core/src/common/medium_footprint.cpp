@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace nimbus::media {
 
@@ -36,6 +37,120 @@ SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& vie
         radiusTimesArea += area * half;
     }
     return {covered / pixels, covered > 0.0 ? radiusTimesArea / covered : 0.0};
+}
+
+namespace {
+
+// The interval of x/depth over a circle of radius r at (x, depth), depth > r: each end from the
+// circle's nearest or farthest depth, whichever bounds it.
+glm::dvec2 tangentInterval(double x, double depth, double r) {
+    const double lo = x - r, hi = x + r;
+    return {lo / (lo <= 0.0 ? depth - r : depth + r), hi / (hi >= 0.0 ? depth - r : depth + r)};
+}
+
+// Window pixels of an ndc interval pair, grown by margin and clipped to the view.
+glm::ivec4 pixelRect(glm::dvec2 lo, glm::dvec2 hi, const gpu::View& view, int margin) {
+    if (!(hi.x >= lo.x) || !(hi.y >= lo.y)) return glm::ivec4(0);
+    const glm::dvec2 size(view.width, view.height);
+    const glm::ivec2 a = glm::ivec2(glm::clamp(glm::floor((lo * 0.5 + 0.5) * size) - double(margin), glm::dvec2(0.0), size));
+    const glm::ivec2 b = glm::ivec2(glm::clamp(glm::ceil((hi * 0.5 + 0.5) * size) + double(margin), glm::dvec2(0.0), size));
+    if (b.x <= a.x || b.y <= a.y) return glm::ivec4(0);
+    return {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
+}  // namespace
+
+glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b) {
+    const glm::ivec2 lo = glm::max(glm::ivec2(a), glm::ivec2(b));
+    const glm::ivec2 hi = glm::min(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
+    if (hi.x <= lo.x || hi.y <= lo.y) return glm::ivec4(0);
+    return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+}
+
+// The ndc bounds (lower left, upper right) of spheres as one view sees them.
+class SphereBounds {
+public:
+    explicit SphereBounds(const gpu::View& view)
+        : view_(view),
+          viewMatrix_(view.view),
+          // Half the view's extent: in tan units (perspective) or metres (orthographic).
+          half_(view.orthographic ? glm::dvec2(view.orthoHalfExtent) : glm::dvec2(view.tanHalfFovY * view.aspect, view.tanHalfFovY)) {}
+
+    std::pair<glm::dvec2, glm::dvec2> operator()(const glm::dvec3& position, double r) const {
+        const glm::dvec3 c(viewMatrix_ * glm::dvec4(position - view_.origin, 1.0));
+        const double depth = -c.z;
+        if (view_.orthographic) return {(glm::dvec2(c) - r) / half_, (glm::dvec2(c) + r) / half_};
+        if (depth <= r) return {glm::dvec2(-1.0), glm::dvec2(1.0)};
+        const glm::dvec2 x = tangentInterval(c.x, depth, r) / half_.x, y = tangentInterval(c.y, depth, r) / half_.y;
+        return {{x[0], y[0]}, {x[1], y[1]}};
+    }
+
+private:
+    const gpu::View& view_;
+    glm::dmat4 viewMatrix_;
+    glm::dvec2 half_;
+};
+
+glm::ivec4 billboardRect(const ParticleSet& particles, const std::vector<std::uint8_t>& which, const gpu::View& view, int margin) {
+    const SphereBounds bounds(view);
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (std::size_t i = 0; i < particles.size() && i < which.size(); ++i) {
+        if (which[i] == 0) continue;
+        const auto [a, b] = bounds(particles.position[i], particles.radius[i]);
+        lo = glm::min(lo, a);
+        hi = glm::max(hi, b);
+    }
+    return pixelRect(lo, hi, view, margin);
+}
+
+std::vector<std::uint8_t> billboardsMeeting(const ParticleSet& particles, const gpu::View& view, glm::ivec4 rect) {
+    const SphereBounds bounds(view);
+    std::vector<std::uint8_t> meets(particles.size(), 0);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const auto [a, b] = bounds(particles.position[i], particles.radius[i]);
+        meets[i] = intersectRects(pixelRect(a, b, view, 0), rect).z > 0 ? 1 : 0;
+    }
+    return meets;
+}
+
+// The window pixels of a box's corners; the whole view where a corner lies behind the near plane.
+glm::ivec4 boxRect(const OccluderBox& box, const gpu::View& view, int margin) {
+    const glm::dmat4 viewMatrix(view.view), projection(view.projection);
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::dvec3 p = box.centre;
+        for (int a = 0; a < 3; ++a) p += box.axis[a] * (((corner >> a) & 1) != 0 ? box.half[a] : -box.half[a]);
+        const glm::dvec4 v = viewMatrix * glm::dvec4(p - view.origin, 1.0);
+        if (!view.orthographic && -v.z <= view.znear) return pixelRect(glm::dvec2(-1.0), glm::dvec2(1.0), view, margin);
+        const glm::dvec4 clip = projection * v;
+        lo = glm::min(lo, glm::dvec2(clip) / clip.w);
+        hi = glm::max(hi, glm::dvec2(clip) / clip.w);
+    }
+    return pixelRect(lo, hi, view, margin);
+}
+
+glm::ivec4 unionRects(glm::ivec4 a, glm::ivec4 b) {
+    if (a.z <= 0) return b;
+    if (b.z <= 0) return a;
+    const glm::ivec2 lo = glm::min(glm::ivec2(a), glm::ivec2(b));
+    const glm::ivec2 hi = glm::max(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
+    return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+}
+
+glm::ivec4 nearMeshRect(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach, const gpu::View& view, int margin) {
+    glm::ivec4 rect(0);
+    std::vector<std::uint8_t> near(particles.size());
+    for (const OccluderBox& box : meshes) {
+        bool any = false;
+        for (std::size_t i = 0; i < particles.size(); ++i) {
+            const double r = reach * particles.radius[i];
+            near[i] = squaredDistance(box, particles.position[i]) < r * r ? 1 : 0;
+            any = any || near[i] != 0;
+        }
+        // A ground under a cloud meets only the particles near it: its own rect, not the union's.
+        if (any) rect = unionRects(rect, intersectRects(boxRect(box, view, margin), billboardRect(particles, near, view, margin)));
+    }
+    return rect;
 }
 
 float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles) {

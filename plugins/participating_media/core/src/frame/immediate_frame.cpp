@@ -58,6 +58,7 @@ MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* tim
     const ClipDepthZeroToOne clip;
     im.giveBack(im.color);
     im.giveBack(im.depthUsed);
+    im.giveBack(im.edges);
     im.frame.host = host;  // the slice views and uniform blocks stay from renderLightSlices
     gpu::FrameGraph graph(im.pool);
     im.importShadowMap(graph, host);
@@ -74,10 +75,12 @@ MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* tim
     }
     if (im.frame.color.valid()) graph.extract(im.frame.color);
     if (im.frame.depthUsed.valid()) graph.extract(im.frame.depthUsed);
+    if (im.frame.edges.valid()) graph.extract(im.frame.edges);
     graph.compile();
     graph.execute(timer);
     if (im.frame.color.valid()) im.color = graph.extracted(im.frame.color);
     if (im.frame.depthUsed.valid()) im.depthUsed = graph.extracted(im.frame.depthUsed);
+    if (im.frame.edges.valid()) im.edges = graph.extracted(im.frame.edges);
     im.pool.endFrame();
     gpu::applyPipeline({});
     im.previousFrame = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
@@ -85,6 +88,8 @@ MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* tim
         layer.color = im.color->id();
         layer.size = {im.color->desc().width, im.color->desc().height};
         layer.depthUsed = im.depthUsed != nullptr ? im.depthUsed->id() : 0;
+        layer.edges = im.edges != nullptr ? im.edges->id() : 0;
+        layer.edgeRect = im.edges != nullptr ? im.frame.edgeRect : glm::ivec4(0);
         layer.edgeThreshold = im.frame.edgeThreshold;
     }
     return layer;

@@ -15,6 +15,7 @@ struct ImmediateFrame {
     const gpu::Texture* slices = nullptr;  // extracted from the graphs, handed back to the pool next frame
     const gpu::Texture* color = nullptr;
     const gpu::Texture* depthUsed = nullptr;
+    const gpu::Texture* edges = nullptr;
     // The last frame's end: its uniform blocks are rewritten next frame, and llvmpipe does not order
     // a buffer update after queued draws that read it.
     GLsync previousFrame = nullptr;

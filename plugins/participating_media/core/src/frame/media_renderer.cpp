@@ -12,6 +12,7 @@
 #include "nimbus/media/slice_plan.h"
 #include "particles/splat_floor.h"
 #include "upsample/media_depth_used_pass.h"
+#include "upsample/media_edge_stencil_pass.h"
 
 namespace nimbus::media {
 
@@ -108,7 +109,7 @@ void MediaRenderer::planTarget(const GraphFrame& context) {
 }
 
 void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) {
-    context.slices = context.color = context.depthUsed = {};
+    context.slices = context.color = context.depthUsed = context.edges = {};
     context.sliceViews.clear();
     context.blocks = nullptr;
     context.multiple = false;
@@ -218,7 +219,8 @@ double MediaRenderer::measureSplatFloor(const gpu::View& view, int repeats) {
 }
 
 void MediaRenderer::addMedia(gpu::FrameGraph& graph, GraphFrame& context) {
-    context.color = context.depthUsed = {};
+    context.color = context.depthUsed = context.edges = {};
+    context.edgeRect = glm::ivec4(0);
     if (particles_ == nullptr || !hasMedium(*particles_, volumes_) || context.blocks == nullptr) return;
     const gpu::View& v = context.host.camera;
     const MediaTarget& target = shared_->target;
@@ -228,6 +230,12 @@ void MediaRenderer::addMedia(gpu::FrameGraph& graph, GraphFrame& context) {
         if (!depthUsedPass_) depthUsedPass_ = std::make_unique<MediaDepthUsedPass>();
         context.depthUsed = depthUsedPass_->add(graph, context, target);
         context.edgeThreshold = settings_.upsampleThreshold;
+        if (const glm::ivec4 rect = technique_->edgeRect(); rect.z > 0) {
+            if (!edgeStencilPass_) edgeStencilPass_ = std::make_unique<MediaEdgeStencilPass>();
+            const EdgeTarget edges = edgeStencilPass_->add(graph, context, context.depthUsed, target, context.edgeThreshold, rect);
+            context.edges = technique_->addEdges(graph, context, frame_, edges);
+            context.edgeRect = rect;
+        }
     }
 }
 

@@ -15,13 +15,14 @@ namespace {
 constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
 constexpr GLint kFirstRankLocation = 12;     // particle_splats.vert uFirstRank
+constexpr GLint kFragOffsetLocation = 13;    // particle_splats.frag uFragOffset
 }
 
 ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 
 const gpu::Program& ParticleSplatPass::program(const SplatVariant& variant) {
     gpu::Program& p = programs_[(variant.eyeInside ? 1 : 0) + (variant.lamps ? 2 : 0) + (variant.constant ? 4 : 0) +
-                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0)];
+                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0) + (variant.rankList ? 32 : 0)];
     if (!p) p = gpu::compileProgram(particleSplatDesc(variant));
     return p;
 }
@@ -33,6 +34,7 @@ gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant) {
     if (variant.constant) desc.defines.push_back("SPLAT_CONSTANT");
     if (variant.meshCrossings && !variant.constant) desc.defines.push_back("MEDIA_MESH_CROSSINGS");
     if (variant.multiple) desc.defines.push_back("MEDIA_MULTIPLE");
+    if (variant.rankList) desc.defines.push_back("SPLAT_RANK_LIST");
     return desc;
 }
 
@@ -62,48 +64,72 @@ std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const s
 gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
                                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                               const FragmentLamps& lamps, const MediaTarget& target) {
-    const bool anyLamps = lamps.lamps[0] >= 0, crossings = variant.meshCrossings;
-    variant.multiple = context.multiple;
-    struct Data {
-        gpu::ResourceHandle media, depth, slices, shadowMap;
-    };
     const int w = target.size.x, h = target.size.y;
-    const auto& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<SplatInputs>(
         "media_particle_splats",
-        [&](gpu::PassBuilder& builder, Data& d) {
+        [&](gpu::PassBuilder& builder, SplatInputs& d) {
             d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
-            d.depth = builder.read(context.sceneDepth);
-            if (lamps.lamps[0] >= 0 && context.slices.valid()) d.slices = builder.read(context.slices);
-            if ((anyLamps || crossings) && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+            declareInputs(builder, context, variant, lamps, d);
         },
         [this, variant, flags = std::move(flags), &context, &buffer, &lighting, lamps, w, h,
-         scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
+         scale = target.fullResScale](const gpu::PassResources& resources, const SplatInputs& d) {
             const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
-            context.blocks->bind();
-            buffer.bindParticles();
-            buffer.bindOrder();
-            lighting.bind();
-            glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
-            glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
-            if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
-            if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
-            gpu::applyPipeline(kMediaOver);
-            glBindVertexArray(vertexArray_.id());
-            // The order is known only now: the upload pass sorted it.
-            for (const SplatRun& run : splatRuns(buffer.order(), flags)) {
-                SplatVariant own = variant;
-                own.meshCrossings = run.meshCrossings;
-                own.lamps = run.lamps;
-                const GLuint id = program(own).id();
-                glUseProgram(id);
-                glProgramUniform2f(id, 1, scale.x, scale.y);
-                glProgramUniform1i(id, kFragmentSunLocation, lamps.sun);
-                if (run.lamps) glProgramUniform1iv(id, kFragmentLampsLocation, kMaxFragmentLamps, lamps.lamps.data());
-                glProgramUniform1i(id, kFirstRankLocation, static_cast<GLint>(run.first));
-                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(run.count));
-            }
+            draw(resources, d, {.context = context, .buffer = buffer, .lighting = lighting, .variant = variant, .flags = flags, .lamps = lamps},
+                 scale, kMediaOver);
         });
     return data.media;
+}
+
+void ParticleSplatPass::declareInputs(gpu::PassBuilder& builder, const GraphFrame& context, const SplatVariant& variant,
+                                      const FragmentLamps& lamps, SplatInputs& d) {
+    const bool anyLamps = lamps.lamps[0] >= 0;
+    d.depth = builder.read(context.sceneDepth);
+    if (anyLamps && context.slices.valid()) d.slices = builder.read(context.slices);
+    if ((anyLamps || variant.meshCrossings) && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+}
+
+void ParticleSplatPass::draw(const gpu::PassResources& resources, const SplatInputs& d, const SplatDraw& s, glm::vec2 scale,
+                             const gpu::PipelineState& state, glm::vec2 offset, const std::vector<std::uint32_t>& ranks) {
+    SplatVariant variant = s.variant;
+    variant.multiple = s.context.multiple;
+    variant.rankList = !ranks.empty();
+    // The particle at each place of the draw: its rank's, or its listed rank's.
+    std::vector<std::uint32_t> listed;
+    if (variant.rankList) {
+        const std::size_t bytes = ranks.size() * sizeof(std::uint32_t);
+        if (bytes > ranksCapacity_) {
+            ranksCapacity_ = std::max(bytes, 2 * ranksCapacity_);
+            ranks_ = gpu::createBuffer(ranksCapacity_);
+        }
+        glNamedBufferSubData(ranks_.id(), 0, static_cast<GLsizeiptr>(bytes), ranks.data());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSplatRanksBinding, ranks_.id());
+        listed.reserve(ranks.size());
+        for (const std::uint32_t rank : ranks) listed.push_back(s.buffer.order()[rank]);
+    }
+    s.context.blocks->bind();
+    s.buffer.bindParticles();
+    s.buffer.bindOrder();
+    s.lighting.bind();
+    glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
+    glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
+    if (d.slices.valid()) glBindTextureUnit(kSlicesUnit, resources.id(d.slices));
+    if (d.shadowMap.valid()) glBindTextureUnit(kShadowDepthUnit, resources.id(d.shadowMap));
+    gpu::applyPipeline(state);
+    glBindVertexArray(vertexArray_.id());
+    // The order is known only now: the upload pass sorted it.
+    for (const SplatRun& run : splatRuns(variant.rankList ? listed : s.buffer.order(), s.flags)) {
+        SplatVariant own = variant;
+        own.meshCrossings = run.meshCrossings;
+        own.lamps = run.lamps;
+        const GLuint id = program(own).id();
+        glUseProgram(id);
+        glProgramUniform2f(id, 1, scale.x, scale.y);
+        glProgramUniform2f(id, kFragOffsetLocation, offset.x, offset.y);
+        glProgramUniform1i(id, kFragmentSunLocation, s.lamps.sun);
+        if (run.lamps) glProgramUniform1iv(id, kFragmentLampsLocation, kMaxFragmentLamps, s.lamps.lamps.data());
+        glProgramUniform1i(id, kFirstRankLocation, static_cast<GLint>(run.first));
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(run.count));
+    }
 }
 
 }  // namespace nimbus::media

@@ -4,6 +4,7 @@
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/gl_objects.h"
+#include "nimbus/gpu/pipeline_state.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/media/graph_frame.h"
 #include "particles/particle_lighting_pass.h"
@@ -18,6 +19,7 @@ struct SplatVariant {
     bool constant = false;       // one ray per particle (LightingVariant::constant)
     bool meshCrossings = false;  // the sun's mesh visibility per fragment where the lighting pass flags a crossing
     bool multiple = false;       // the multiple model: the sun's forward-peak orders (set by add from the frame)
+    bool rankList = false;       // draws the ranks a list holds (set by draw when given one)
 };
 // The splat program (particle_splats.*).
 gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant);
@@ -48,9 +50,30 @@ public:
                                const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                const FragmentLamps& lamps, const MediaTarget& target);
 
+    // What one draw of the splats needs besides its target (the main pass's and the edges').
+    struct SplatInputs {
+        gpu::ResourceHandle media, depth, slices, shadowMap;
+    };
+    struct SplatDraw {
+        GraphFrame& context;
+        const ParticleGpuBuffer& buffer;
+        const ParticleLightingPass& lighting;
+        SplatVariant variant;
+        const std::vector<std::uint8_t>& flags;
+        const FragmentLamps& lamps;
+    };
+    static void declareInputs(gpu::PassBuilder& builder, const GraphFrame& context, const SplatVariant& variant, const FragmentLamps& lamps,
+                              SplatInputs& d);
+    // Every particle, or only the draw ranks `ranks` lists (in order) where it is not empty, into
+    // the bound framebuffer under `state`: its pixel p is the viewport's p · scale + offset.
+    void draw(const gpu::PassResources& resources, const SplatInputs& d, const SplatDraw& s, glm::vec2 scale,
+              const gpu::PipelineState& state, glm::vec2 offset = glm::vec2(0.0f), const std::vector<std::uint32_t>& ranks = {});
+
 private:
     const gpu::Program& program(const SplatVariant& variant);
-    gpu::Program programs_[32];  // by eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple, built when first asked for
+    gpu::Program programs_[64];  // by eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple + 32·rankList, built when first asked for
+    gpu::Buffer ranks_;          // draw's `ranks`, grown as needed
+    std::size_t ranksCapacity_ = 0;
     gpu::Texture kernelTable_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };

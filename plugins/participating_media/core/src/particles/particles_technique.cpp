@@ -1,12 +1,15 @@
 #include "particles/particles_technique.h"
 
 #include <algorithm>
+#include <optional>
+#include <cmath>
 
 #include "common/shared_frame.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/media/medium_footprint.h"
 #include "particles/particle_lighting_pass.h"
 #include "particles/particle_pass.h"
+#include "particles/particle_splat_edges_pass.h"
 #include "particles/particle_splat_pass.h"
 #include "slices/particle_slices.h"
 
@@ -32,6 +35,13 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
       .actsWhen = "with lighting=particle or particle_exact",
       .showsWith = "a point or spot light inside the medium"},
      &setBoolean<&ParticlesSettings::exactNearLamps>, &perParticleLighting},
+    {{.key = "mixed_resolution",
+      .help = "with media_scale below 1: draw the particles again at full resolution at the reduced image's edges where a "
+              "mesh reaches into the medium (off: upsampled there, and a thin mesh shows a seam; faster)",
+      .type = SettingType::Boolean,
+      .defaultValue = "on",
+      .actsWhen = "with lighting=particle or particle_exact and media_scale below 1 or auto"},
+     &setBoolean<&ParticlesSettings::mixedResolution>, &perParticleLighting},
     // The two below are the per-fragment pass's; frames exact_near_lamps shades per fragment keep
     // their defaults.
     {{.key = "soft_particles",
@@ -54,6 +64,11 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
 // radii of its centre: two radii leave room for the shadow map's texels.
 constexpr double kCrossingReach = 2.0;
 
+// Mixed resolution redraws the splats where a mesh's box enters a particle's sphere (reach 1: the
+// seam's own definition). Two radii, as kCrossingReach, gave the same seam error on
+// wing_through_cloud and cumulus_aircraft over a 43% larger rect on the wing (docs/design-notes.md).
+constexpr double kEdgeReach = 1.0;
+
 // Within this many radii of a point or spot light (or across a spot's cone edge) a particle's
 // fragments take its light (splat_source.glsl); the lighting pass's fit carries it for the others.
 // Beyond about 1.7 radii no ray through a particle passes within two deviations of the lamp, where
@@ -73,6 +88,14 @@ std::vector<std::uint8_t> splatFlags(const std::vector<std::uint8_t>& nearMesh, 
 }
 
 class ParticlesTechnique final : public MediaTechnique {
+    // What this frame's splats drew with, for their redraw at the edges.
+    struct SplatEdges {
+        SplatVariant variant;
+        std::vector<std::uint8_t> flags;
+        FragmentLamps lamps;
+        glm::ivec4 rect{0};
+    };
+
 public:
     void upload(TechniqueFrame& frame, const GraphFrame& context) override {
         SharedFrame& shared = *frame.shared;
@@ -88,7 +111,19 @@ public:
         const ParticlesSettings own = techniqueSettings<ParticlesSettings>(*frame.settings);
         const bool perParticle = own.lighting != ParticleLighting::Fragment &&
                                  !(own.exactNearLamps && lampInsideMedium(*frame.particles, context.host.lights));
+        edges_.reset();
         return perParticle ? addPerParticle(graph, context, frame, own) : addPerFragment(graph, context, frame, own);
+    }
+
+    // The per-particle tiers redraw their splats at the edges where a mesh reaches into the medium;
+    // the per-fragment pass does not.
+    glm::ivec4 edgeRect() const override { return edges_ ? edges_->rect : glm::ivec4(0); }
+
+    gpu::ResourceHandle addEdges(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame, const EdgeTarget& target) override {
+        if (!edges_) return {};
+        return addParticleSplatEdges(graph, context, *splatPass_, *frame.shared->buffer, *lightingPass_,
+                                     {edges_->variant, edges_->flags, billboardsMeeting(*frame.particles, context.host.camera, target.rect), edges_->lamps},
+                                     target);
     }
 
 private:
@@ -104,11 +139,12 @@ private:
         const bool constant = shared.coverage * v.width * v.height < kConstantSplatPixels * static_cast<double>(frame.particles->size());
         const bool exact = own.lighting == ParticleLighting::ParticleExact;
         std::vector<std::uint8_t> nearMesh;
-        if (exact && !constant && lamps.sun >= 0 && context.shadowMap.valid() && !context.host.occluders.empty())
-            nearMesh = particlesNearMeshes(context.host.occluders, *frame.particles, kCrossingReach);
-        const bool crossings = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
+        if (!constant && !context.host.occluders.empty()) nearMesh = particlesNearMeshes(context.host.occluders, *frame.particles, kCrossingReach);
+        const bool nearAny = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
+        const bool crossings = exact && nearAny && lamps.sun >= 0 && context.shadowMap.valid();
         const bool lampRuns = lamps.lamps[0] >= 0;
-        std::vector<std::uint8_t> flags = splatFlags(nearMesh, *frame.particles, context.host.lights, lamps);
+        std::vector<std::uint8_t> flags =
+            splatFlags(crossings ? nearMesh : std::vector<std::uint8_t>{}, *frame.particles, context.host.lights, lamps);
         frame.report("exact_lighting", false);
         frame.report("constant_source", constant);
         frame.report("mesh_crossings", crossings);
@@ -117,9 +153,22 @@ private:
                                        })));
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
                            {.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}, lamps, flags);
-        return splatPass_->add(graph, context, *shared.buffer, *lightingPass_,
-                               {.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings},
-                               std::move(flags), lamps, shared.target);
+        const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings};
+        if (own.mixedResolution && nearAny) planEdges(context, frame, {variant, flags, lamps});
+        frame.report("edge_pixels", static_cast<long long>(edges_ ? edges_->rect.z * edges_->rect.w : 0));
+        return splatPass_->add(graph, context, *shared.buffer, *lightingPass_, variant, std::move(flags), lamps, shared.target);
+    }
+
+    // Mixed resolution where a mesh reaches into the medium: its silhouette and cut there need
+    // their own pixels (a thin wing has no reduced texel at its depth). One reduced texel of
+    // margin covers the upsampling's taps.
+    void planEdges(const GraphFrame& context, const TechniqueFrame& frame, SplatEdges edges) {
+        const gpu::View& v = context.host.camera;
+        const MediaTarget& target = frame.shared->target;
+        if (target.size == glm::ivec2(v.width, v.height)) return;
+        const int margin = static_cast<int>(std::ceil(std::max(target.fullResScale.x, target.fullResScale.y))) + 1;
+        edges.rect = nearMeshRect(context.host.occluders, *frame.particles, kEdgeReach, v, margin);
+        if (edges.rect.z > 0) edges_ = std::move(edges);
     }
 
     gpu::ResourceHandle addPerFragment(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame,
@@ -131,6 +180,7 @@ private:
     }
 
     ParticleSlices slices_;
+    std::optional<SplatEdges> edges_;
     std::unique_ptr<ParticlePass> particlePass_;  // each made when first needed
     std::unique_ptr<ParticleLightingPass> lightingPass_;
     std::unique_ptr<ParticleSplatPass> splatPass_;
@@ -154,7 +204,13 @@ TechniqueEntry particlesTechnique() {
             .sliceDeposit = true,
             .settings = specsOf(kParticlesFields),
             .read = readerOf(kParticlesFields),
-            .idle = idleOf(kParticlesFields),
+            .idle =
+                [](const std::any& read, const MediaRenderSettings& shared) {
+                    std::vector<std::string> idle = idleOf(kParticlesFields)(read, shared);
+                    if (!offscreenMedia(shared) && std::find(idle.begin(), idle.end(), "mixed_resolution") == idle.end())
+                        idle.push_back("mixed_resolution");  // it redraws a reduced image's edges: full resolution has none
+                    return idle;
+                },
             .create = [] { return std::make_unique<ParticlesTechnique>(); },
             .benchRows = [](const ParticleSet&, const std::vector<glm::dvec3>&) {
                 std::vector<BenchRow> rows{{"particles", {{"mode", "particles"}}}};

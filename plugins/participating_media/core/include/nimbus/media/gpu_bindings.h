@@ -22,6 +22,7 @@ inline constexpr std::size_t kMaxHostLights = gpu::kMaxLights;  // MEDIA_MAX_LIG
 // Texture units.
 inline constexpr GLuint kSlabsUnit = 0;           // MEDIA_SLABS_UNIT
 inline constexpr GLuint kHostDepthUnit = 0;       // MEDIA_HOST_DEPTH_UNIT
+inline constexpr GLuint kDepthUsedUnit = 0;       // MEDIA_DEPTH_USED_UNIT (edge_stencil.frag)
 inline constexpr GLuint kSheetUnit = 0;           // MEDIA_SHEET_UNIT (sheet_composite.frag)
 inline constexpr GLuint kSceneDepthUnit = 3;      // MEDIA_SCENE_DEPTH_UNIT
 inline constexpr GLuint kShadowDepthUnit = 4;     // MEDIA_SHADOW_DEPTH_UNIT
@@ -57,6 +58,7 @@ inline constexpr GLuint kBlockNeighboursBinding = 10;    // MEDIA_BLOCK_NEIGHBOU
 inline constexpr GLuint kSlicePiecesBinding = 11;        // MEDIA_SLICE_PIECES_BINDING
 inline constexpr GLuint kVolumesBinding = 12;            // MEDIA_VOLUMES_BINDING
 inline constexpr GLuint kSplatFlagsBinding = 13;         // MEDIA_SPLAT_FLAGS_BINDING (per-particle splat variants)
+inline constexpr GLuint kSplatRanksBinding = 14;         // MEDIA_SPLAT_RANKS_BINDING (the edges' redraw)
 
 // The MediaSliceViews uniform block.
 struct alignas(16) GpuSliceViews {

@@ -12,7 +12,8 @@
 //      LightSlices::bind(): smoke then casts shadows on the host's meshes.
 //   3. renderMedia(frame)  — after it, with frame.sceneDepth: the medium, into MediaLayer.
 //   4. The host composes: pixel = layer.rgb + layer.a · opaque (premultiplied radiance, view
-//      transmittance), upsampling with "common/upsample.glsl" when MediaLayer::depthUsed is set.
+//      transmittance), upsampling with "common/upsample.glsl" when MediaLayer::depthUsed is set, and
+//      taking MediaLayer::edges' texel instead within edgeRect where its alpha is ≥ 0.
 //
 // Conventions: positions sent to the GPU are relative to HostFrame::camera.origin (double on the
 // CPU). HostFrame::camera is the host's camera as the plugin draws with it: a gpu::View built from
@@ -111,6 +112,11 @@ struct LightSlices {
 struct MediaLayer {
     GLuint color = 0;       // RGBA16F/32F, `size`: rgb premultiplied in-scattered radiance, a view transmittance
     GLuint depthUsed = 0;   // R32F view depth per texel when size is below the viewport, else 0
+    // Mixed resolution: RGBA32F of at least edgeRect's size, or 0. Its texel t is the viewport's pixel
+    // edgeRect.xy + t; where its alpha is ≥ 0 it holds the medium drawn at full resolution there
+    // (the reduced layer's edges near a mesh), to take instead of upsampling.
+    GLuint edges = 0;
+    glm::ivec4 edgeRect{0};  // x, y (window pixels from the lower left), width, height
     glm::ivec2 size{0};
     float edgeThreshold = 0.2f;  // relative depth difference the depth-aware upsampling treats as an edge
 };

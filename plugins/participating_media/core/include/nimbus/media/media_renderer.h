@@ -45,6 +45,7 @@ struct MediaFrameStats {
 
 class ParticleGpuBuffer;
 class MediaDepthUsedPass;
+class MediaEdgeStencilPass;
 class SplatFloor;
 struct ImmediateFrame;
 struct SliceView;
@@ -104,6 +105,7 @@ private:
     std::unique_ptr<ImmediateFrame> immediate_;  // renderLightSlices/renderMedia's graph state
     MediaFrameStats stats_;
     std::unique_ptr<MediaDepthUsedPass> depthUsedPass_;
+    std::unique_ptr<MediaEdgeStencilPass> edgeStencilPass_;
     std::unique_ptr<SplatFloor> splatFloor_;
 };
 

@@ -40,6 +40,9 @@ struct MediaRenderSettings {
     std::any technique;
 };
 
+// Whether the medium is drawn at a reduced resolution (media_scale below 1, or auto) and upsampled.
+inline bool offscreenMedia(const MediaRenderSettings& s) { return s.mediaScaleAuto || (s.mediaScale > 0.0f && s.mediaScale < 1.0f); }
+
 inline constexpr int kDefaultScatteringVoxels = 32;
 inline constexpr int kDefaultScatteringSweeps = 64;
 

@@ -25,6 +25,23 @@ struct SplatFootprint {
 };
 SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& view);
 
+// The window pixels (x, y from the lower left, width, height) that bound the spheres of the
+// particles flagged in `which` (one per particle, nonzero: in), grown by `margin` pixels and
+// clipped to the view; width 0 where none is flagged or on screen. Conservative: a sphere around
+// or behind the eye's plane takes the whole view.
+glm::ivec4 billboardRect(const ParticleSet& particles, const std::vector<std::uint8_t>& which, const gpu::View& view, int margin);
+
+// Per particle (1/0): whether its sphere's pixels, as billboardRect bounds them, meet `rect`.
+std::vector<std::uint8_t> billboardsMeeting(const ParticleSet& particles, const gpu::View& view, glm::ivec4 rect);
+
+// Where a mesh reaches into the medium on screen: over the boxes that come within `reach` radii of
+// some particle's centre, the union of each box's rect and its near particles' (billboardRect),
+// grown by `margin`; width 0 where none does.
+glm::ivec4 nearMeshRect(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach, const gpu::View& view, int margin);
+
+// The pixels two rects (x, y, width, height) share; width 0 where none.
+glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b);
+
 // media_scale=auto: 1 unless the billboards cover the image more than kHalfScaleCoverage times
 // over (fill dominates) and no lamp lies among them; then as low as keeps kAutoScaleRadiusTexels
 // across a typical billboard's half size, within [¼, ½]. The kernel is smooth over a billboard,

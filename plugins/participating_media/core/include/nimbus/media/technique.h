@@ -10,6 +10,8 @@
 //   upload          inside the upload pass, after the particles: its own buffers
 //   addLightSlices  the light slices towards every light, into GraphFrame::slices
 //   addMedia        the medium into the media target; returns its colour
+//   addEdges        optional, after addMedia into a reduced target: the medium again at full
+//                   resolution, within edgeRect, where the upsampling meets another depth
 // and its entry: name, help, its own setting declarations and reader, and a factory.
 //
 // Does not: own the particles or the host's resources, or outlive the renderer that made it.
@@ -40,6 +42,14 @@ struct TechniqueStat {
     std::variant<bool, long long, double> value;
 };
 
+// Where a technique draws the medium again at full resolution (MediaLayer::edges).
+// Its texel t is the viewport's pixel rect.xy + t.
+struct EdgeTarget {
+    gpu::ResourceHandle color;    // RGBA32F, at least rect.zw texels: (0, 0, 0, 1) at the edges, alpha −1 elsewhere
+    gpu::ResourceHandle stencil;  // D24S8, its size: stencil 1 at the edges, 0 elsewhere
+    glm::ivec4 rect{0};           // x, y, width, height in the viewport's pixels
+};
+
 // The frame as a technique's calls see it.
 struct TechniqueFrame {
     const ParticleSet* particles = nullptr;
@@ -57,6 +67,11 @@ public:
     virtual void upload(TechniqueFrame&, const GraphFrame&) {}
     virtual void addLightSlices(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) = 0;
     virtual gpu::ResourceHandle addMedia(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame) = 0;
+    // The pixels (x, y, width, height) within which what addMedia drew this frame is drawn again
+    // at a reduced target's edges; width 0 (the default): none, the host upsamples them all.
+    virtual glm::ivec4 edgeRect() const { return glm::ivec4(0); }
+    // The same medium into `edges.color`, where `edges.stencil` is 1; returns the colour.
+    virtual gpu::ResourceHandle addEdges(gpu::FrameGraph&, GraphFrame&, TechniqueFrame&, const EdgeTarget&) { return {}; }
     // Whether this frame reads HostFrame::occluders; a host may skip them otherwise.
     virtual bool readsOccluders() const { return false; }
 };
@@ -78,8 +93,9 @@ struct TechniqueEntry {
     // Its typed settings for `tier` with every one of its keys that was set applied.
     std::function<std::any(const Settings&, QualityTier)> read;
     // Its keys that do not act with its settings as `read` gave them (SettingField::acts, e.g. a
-    // key only per-fragment lighting reads); a key set there is refused. Null: they all act.
-    std::function<std::vector<std::string>(const std::any&)> idle;
+    // key only per-fragment lighting reads) and the shared ones; a key set there is refused. Null:
+    // they all act.
+    std::function<std::vector<std::string>(const std::any&, const MediaRenderSettings&)> idle;
     std::function<std::unique_ptr<MediaTechnique>()> create;
     // Its rows of `sandbox bench`'s sweep for a scene's particles and lamps; none where empty.
     std::function<std::vector<BenchRow>(const ParticleSet&, const std::vector<glm::dvec3>& lamps)> benchRows;
@@ -110,8 +126,8 @@ std::function<std::any(const Settings&, QualityTier)> readerOf(const SettingFiel
 
 // TechniqueEntry::idle for the same fields: the keys whose `acts` is false for the read settings.
 template <class S, std::size_t N>
-std::function<std::vector<std::string>(const std::any&)> idleOf(const SettingField<S> (&fields)[N]) {
-    return [&fields](const std::any& read) { return idleKeys(fields, std::any_cast<const S&>(read)); };
+std::function<std::vector<std::string>(const std::any&, const MediaRenderSettings&)> idleOf(const SettingField<S> (&fields)[N]) {
+    return [&fields](const std::any& read, const MediaRenderSettings&) { return idleKeys(fields, std::any_cast<const S&>(read)); };
 }
 
 // particles, blocks, raymarch, sheets and billboards (core/src/frame/technique_table.cpp).

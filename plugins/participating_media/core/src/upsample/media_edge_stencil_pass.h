@@ -1,0 +1,30 @@
+#pragma once
+// The `media_edge_stencil` pass (shaders/media/upsample/edge_stencil.frag).
+#include "common/media_target.h"
+#include "nimbus/gpu/frame_graph.h"
+#include "nimbus/gpu/fullscreen_pass.h"
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/media/graph_frame.h"
+#include "nimbus/media/technique.h"
+
+namespace nimbus::media {
+
+// Mixed resolution (Cantlay, "High-Speed, Off-Screen Particles"): the pixels of a reduced media
+// target whose four texels were not all computed at the pixel's depth (upsampleEdge in
+// shaders/common/upsample.glsl) are marked, so the technique can draw its medium there again at
+// full resolution behind a stencil test. The rest of the edge target says "not drawn" (alpha −1),
+// so a host takes exactly the pixels drawn, whatever its own depth arithmetic.
+class MediaEdgeStencilPass {
+public:
+    MediaEdgeStencilPass();
+    // After MediaDepthUsedPass: `depthUsed` is its texture for the reduced `target`.
+    // `rect`: the pixels (x, y, width, height) it marks, as the technique's edgeRect.
+    EdgeTarget add(gpu::FrameGraph& graph, GraphFrame& context, gpu::ResourceHandle depthUsed, const MediaTarget& target, float threshold,
+                   glm::ivec4 rect);
+
+private:
+    gpu::FullscreenPass pass_;
+    gpu::Sampler clampedNearest_;  // the gather reads past the reduced target's border
+};
+
+}  // namespace nimbus::media
