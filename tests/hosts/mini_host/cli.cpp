@@ -53,7 +53,7 @@ void parseMediaScale(const std::string& text, Options& o) {
 
 const char* usage() {
     return "usage: mini_host SCENE.gltf --out F.exr [--size WxH] [--time T] [--media-out M.exr] [--mode particles|blocks|raymarch|sheets|billboards] "
-           "[--media-scale S] [--depth reversed|standard]";
+           "[--media-scale S] [--quality exact|balanced|fast] [--depth reversed|standard]";
 }
 
 Options parseArguments(int argc, const char* const* argv) {
@@ -65,7 +65,7 @@ Options parseArguments(int argc, const char* const* argv) {
             return o;
         }
         const bool takesValue = arg == "--out" || arg == "--size" || arg == "--time" || arg == "--media-out" || arg == "--mode" ||
-                                arg == "--media-scale" || arg == "--depth";
+                                arg == "--media-scale" || arg == "--depth" || arg == "--quality";
         if (takesValue && i + 1 >= argc) throw UsageError(arg + ": missing value");
         if (arg == "--out") o.out = argv[++i];
         else if (arg == "--media-out") o.mediaOut = argv[++i];
@@ -73,6 +73,11 @@ Options parseArguments(int argc, const char* const* argv) {
         else if (arg == "--time") parseTime(argv[++i], o);
         else if (arg == "--mode") o.mode = argv[++i];
         else if (arg == "--media-scale") parseMediaScale(argv[++i], o);
+        else if (arg == "--quality") {
+            o.quality = argv[++i];
+            if (o.quality != "exact" && o.quality != "balanced" && o.quality != "fast")
+                throw UsageError("--quality: expected exact, balanced or fast, not \"" + o.quality + "\"");
+        }
         else if (arg == "--depth") {
             const std::string depth = argv[++i];
             if (depth != "reversed" && depth != "standard") throw UsageError("--depth: expected reversed or standard, not \"" + depth + "\"");

@@ -21,7 +21,8 @@ struct Options {
     int width = 1280, height = 720;
     double time = 0.0;
     std::string mode;         // empty: the plugin's default (particles)
-    float mediaScale = 0.0f;  // 0: the plugin's default (1)
+    float mediaScale = 0.0f;  // 0: the tier's (exact: 1, fast: automatic)
+    std::string quality = "exact";  // the media's tier (nimbus::media::mediaSettingsForTier)
     bool standardDepth = false;  // --depth standard: the opaque pass draws standard depth
     bool help = false;
 };

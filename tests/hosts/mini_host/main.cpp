@@ -10,6 +10,8 @@
 #include "media/media_module.h"
 #include "modules/render_module.h"
 #include "modules/transform_module.h"
+#include "nimbus/media/media_settings.h"
+#include "nimbus/media/technique.h"
 
 int main(int argc, char** argv) {
     mini::Options options;
@@ -28,9 +30,15 @@ int main(int argc, char** argv) {
         mini::ecs::World world;
         world.set(mini::SceneRequest{options.scene, options.time});
         world.set(mini::RenderRequest{options.width, options.height, options.out, options.mediaOut, options.standardDepth});
-        nimbus::media::MediaRenderSettings media;
-        media.mode = options.mode;  // MediaRenderer::prepare refuses a mode its table does not have
-        media.mediaScale = options.mediaScale;
+        // The tier's settings for the mode (an unknown mode is refused here, naming the modes).
+        const nimbus::QualityTier tier = options.quality == "fast"       ? nimbus::QualityTier::Fast
+                                         : options.quality == "balanced" ? nimbus::QualityTier::Balanced
+                                                                         : nimbus::QualityTier::Exact;
+        nimbus::media::MediaRenderSettings media = nimbus::media::mediaSettingsForTier(tier, nimbus::media::builtInTechniques(), options.mode);
+        if (options.mediaScale > 0.0f) {
+            media.mediaScale = options.mediaScale;
+            media.mediaScaleAuto = false;
+        }
         world.set(mini::MediaSettings{media});
         world.import<mini::TransformModule>();
         world.import<mini::MediaModule>();  // before the render module: its bounds feed render.gather

@@ -7,6 +7,7 @@
 // Also: a bad command line exits 2 with one line, a broken extension exits 1 naming the field.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <ostream>
 #include <string>
@@ -120,13 +121,33 @@ TEST(MiniHost, AStandardDepthHostGetsTheSameImage) {
     }
 }
 
+// Mixed resolution through the host contract: fast at half resolution redraws the aircraft's edges
+// in cumulus_aircraft at full resolution (MediaLayer::edges), and mini_host composes them as
+// Nimbus does. Sandbox's opaque pass keeps the exact tier's shadows (mini_host has only those).
+TEST(MiniHost, TheFastTiersEdgesComposeAsInNimbus) {
+    TempFolder folder;
+    const std::string scene = withoutTextures("cumulus_aircraft", folder);
+    const std::string mini = (folder / "mini.exr").string(), nimbus = (folder / "nimbus.exr").string();
+    const ProcessResult ra = runProcess(miniHost(), {scene, "--size", "256x144", "--quality", "fast", "--media-scale", "0.5", "--out", mini});
+    const ProcessResult rb = runProcess(sandboxExecutable(), {"render", scene, "--size", "256x144", "--quality", "fast", "--set", "media_scale=0.5",
+                                                              "--set", "shadow_map_size=2048", "--set", "pcf_radius=1", "--out", nimbus});
+    ASSERT_EQ(ra.exitCode, 0) << ra.describe() << "\n" << ra.err;
+    ASSERT_EQ(rb.exitCode, 0) << rb.describe() << "\n" << rb.err;
+    const media::reference::ImageMetrics m = media::reference::compareImages(assets::readImage(mini), assets::readImage(nimbus));
+    EXPECT_EQ(m.nonfinite, 0u);
+    EXPECT_LE(m.relRmse, kImageRelRmse);
+    EXPECT_LE(m.p99Abs, kImageP99);
+    std::printf("[ measured ] cumulus_aircraft fast at half resolution: mini_host against sandbox rel_rmse=%.4f p99=%.4f\n", m.relRmse, m.p99Abs);
+}
+
 TEST(MiniHost, BadCommandLinesExitTwoWithOneLine) {
     TempFolder folder;
     const std::string out = (folder / "x.exr").string();
     for (const std::vector<std::string>& args : {std::vector<std::string>{content("demo"), "--out", out, "--size", "160"},
                                                  std::vector<std::string>{content("demo")},
                                                  std::vector<std::string>{content("demo"), "--out", out, "--media-scale", "2"},
-                                                 std::vector<std::string>{content("demo"), "--out", out, "--depth", "inverted"}}) {
+                                                 std::vector<std::string>{content("demo"), "--out", out, "--depth", "inverted"},
+                                                 std::vector<std::string>{content("demo"), "--out", out, "--quality", "fastest"}}) {
         const ProcessResult r = runProcess(miniHost(), args);
         EXPECT_EQ(r.exitCode, 2) << r.describe();
         EXPECT_EQ(r.errLines().size(), 1u) << r.err;
