@@ -89,7 +89,8 @@ const SharedField kSharedFields[] = {
        .actsWhen = "in the multiple-scattering model"},
       &setInteger<&MediaRenderSettings::scatteringVoxels>},
      Acts::MultipleScattering},
-    {{{.key = "scattering_sweeps", .help = "multiple scattering: most relaxation sweeps of its diffusion solve per frame (each frame starts from the last)",
+    {{{.key = "scattering_sweeps", .help = "multiple scattering: most relaxation sweeps of its diffusion solve per frame (each frame starts from a coarser "
+               "grid's solve; an unchanged medium and light keep the last frame's)",
        .type = SettingType::Integer, .min = 1, .max = 1024, .defaultValue = std::to_string(kDefaultScatteringSweeps),
        .actsWhen = "in the multiple-scattering model"},
       &setInteger<&MediaRenderSettings::scatteringSweeps>},
