@@ -21,6 +21,7 @@ layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(binding = MEDIA_VOXEL_SCATTERING_UNIT) uniform sampler3D uScattering;  // rgb σ_t·albedo, a σ_t
 layout(binding = MEDIA_VOXEL_EMISSION_UNIT) uniform sampler3D uEmission;      // rgb σ_t·emission, a σ_t·g
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel
+layout(location = 7) uniform vec2 uFragOffset;    // the target's first pixel in the viewport (0 but for a rect of edges)
 layout(location = 2) uniform vec3 uGridCorner;    // frame-relative
 layout(location = 3) uniform vec3 uGridExtent;
 layout(location = 4) uniform float uVoxel;
@@ -65,7 +66,7 @@ vec3 ambientAt(vec3 p, vec3 dir, float g) {
 }
 
 void main() {
-    vec2 fragCoord = gl_FragCoord.xy * uFullResScale;
+    vec2 fragCoord = gl_FragCoord.xy * uFullResScale + uFragOffset;
     vec3 origin, dir;
     cameraRay(fragCoord, origin, dir);
     float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
@@ -78,7 +79,7 @@ void main() {
     }
     int steps = clamp(int(ceil((span.y - span.x) / uVoxel)), 1, uMaxSteps);
     float dt = (span.y - span.x) / float(steps);
-    float t = span.x + dt * jitter(gl_FragCoord.xy);
+    float t = span.x + dt * jitter(gl_FragCoord.xy + uFragOffset);
     vec3 radiance = vec3(0.0);
     float transmittance = 1.0;
     for (int k = 0; k < steps && transmittance > 1e-3; ++k, t += dt) {

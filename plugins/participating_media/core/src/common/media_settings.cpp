@@ -32,7 +32,10 @@ void setSliceDetail(MediaRenderSettings& s, const SettingValue& v) {
 bool sliceResolutionAuto(const MediaRenderSettings& s) { return s.sliceTexelsPerRadius > 0.0f; }
 // The upsampler runs only where the media pass is smaller than the frame.
 
-enum class Acts { Everywhere, LitBySlices, SliceDeposit, MultipleScattering };
+// mixed_resolution is on where the field is zero (MediaRenderSettings::upsampleOnly).
+void setMixedResolution(MediaRenderSettings& s, const SettingValue& v) { s.upsampleOnly = !v.boolean; }
+
+enum class Acts { Everywhere, LitBySlices, SliceDeposit, MultipleScattering, Edges };
 
 struct SharedField {
     SettingField<MediaRenderSettings> field;
@@ -84,6 +87,13 @@ const SharedField kSharedFields[] = {
        .actsWhen = "with media_scale below 1 or auto"},
       &setNumber<&MediaRenderSettings::upsampleThreshold>, &offscreenMedia},
      Acts::Everywhere},
+    {{{.key = "mixed_resolution",
+       .help = "with media_scale below 1: draw the medium again at full resolution at the reduced image's edges where a mesh "
+               "enters it (off: upsampled there too, and a thin mesh shows a seam; faster)",
+       .type = SettingType::Boolean, .defaultValue = "on",
+       .actsWhen = "with media_scale below 1 or auto"},
+      &setMixedResolution, &offscreenMedia},
+     Acts::Edges},
     {{{.key = "scattering_voxels", .help = "multiple scattering: voxels of the grid its scattered light diffuses on, along the medium's longest side",
        .type = SettingType::Integer, .min = 4, .max = 128, .defaultValue = std::to_string(kDefaultScatteringVoxels),
        .actsWhen = "in the multiple-scattering model"},
@@ -149,7 +159,7 @@ void declareMediaSettings(Settings& settings, const TechniqueTable& techniques) 
                 if (shared.field.acts(sharedForTier(static_cast<QualityTier>(t)))) spec.tiers |= 1u << t;
         for (const TechniqueEntry& e : techniques.entries())
             if ((shared.acts == Acts::LitBySlices && e.lightSlices) || (shared.acts == Acts::SliceDeposit && e.sliceDeposit) ||
-                (shared.acts == Acts::MultipleScattering && e.multipleScattering))
+                (shared.acts == Acts::MultipleScattering && e.multipleScattering) || (shared.acts == Acts::Edges && e.edges))
                 spec.modes.push_back(e.name);
         settings.declare(spec);
     }

@@ -153,6 +153,14 @@ glm::ivec4 nearMeshRect(const std::vector<OccluderBox>& meshes, const ParticleSe
     return rect;
 }
 
+glm::ivec4 meshEdgeRect(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, const gpu::View& view, glm::ivec2 targetSize) {
+    const glm::ivec2 full(view.width, view.height);
+    if (targetSize == full || meshes.empty()) return glm::ivec4(0);
+    const glm::vec2 perTexel = glm::vec2(full) / glm::vec2(glm::max(targetSize, glm::ivec2(1)));
+    const int margin = static_cast<int>(std::ceil(std::max(perTexel.x, perTexel.y))) + 1;
+    return nearMeshRect(meshes, particles, kEdgeReach, view, margin);
+}
+
 float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles) {
     // A lamp among the particles lights a peak a few pixels wide, which a lower resolution blurs away.
     if (footprint.coverage <= kHalfScaleCoverage || lampAmongParticles) return 1.0f;

@@ -35,13 +35,6 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
       .actsWhen = "with lighting=particle or particle_exact",
       .showsWith = "a point or spot light inside the medium"},
      &setBoolean<&ParticlesSettings::exactNearLamps>, &perParticleLighting},
-    {{.key = "mixed_resolution",
-      .help = "with media_scale below 1: draw the particles again at full resolution at the reduced image's edges where a "
-              "mesh reaches into the medium (off: upsampled there, and a thin mesh shows a seam; faster)",
-      .type = SettingType::Boolean,
-      .defaultValue = "on",
-      .actsWhen = "with lighting=particle or particle_exact and media_scale below 1 or auto"},
-     &setBoolean<&ParticlesSettings::mixedResolution>, &perParticleLighting},
     // The two below are the per-fragment pass's; frames exact_near_lamps shades per fragment keep
     // their defaults.
     {{.key = "soft_particles",
@@ -63,11 +56,6 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
 // particle only where the occluder lies within half a radius of a shading point, so within 1.5
 // radii of its centre: two radii leave room for the shadow map's texels.
 constexpr double kCrossingReach = 2.0;
-
-// Mixed resolution redraws the splats where a mesh's box enters a particle's sphere (reach 1: the
-// seam's own definition). Two radii, as kCrossingReach, gave the same seam error on
-// wing_through_cloud and cumulus_aircraft over a 43% larger rect on the wing (docs/design-notes.md).
-constexpr double kEdgeReach = 1.0;
 
 // Within this many radii of a point or spot light (or across a spot's cone edge) a particle's
 // fragments take its light (splat_source.glsl); the lighting pass's fit carries it for the others.
@@ -154,7 +142,7 @@ private:
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
                            {.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}, lamps, flags);
         const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings};
-        if (own.mixedResolution && nearAny) planEdges(context, frame, {variant, flags, lamps});
+        if (!frame.settings->upsampleOnly && nearAny) planEdges(context, frame, {variant, flags, lamps});
         frame.report("edge_pixels", static_cast<long long>(edges_ ? edges_->rect.z * edges_->rect.w : 0));
         return splatPass_->add(graph, context, *shared.buffer, *lightingPass_, variant, std::move(flags), lamps, shared.target);
     }
@@ -163,11 +151,7 @@ private:
     // their own pixels (a thin wing has no reduced texel at its depth). One reduced texel of
     // margin covers the upsampling's taps.
     void planEdges(const GraphFrame& context, const TechniqueFrame& frame, SplatEdges edges) {
-        const gpu::View& v = context.host.camera;
-        const MediaTarget& target = frame.shared->target;
-        if (target.size == glm::ivec2(v.width, v.height)) return;
-        const int margin = static_cast<int>(std::ceil(std::max(target.fullResScale.x, target.fullResScale.y))) + 1;
-        edges.rect = nearMeshRect(context.host.occluders, *frame.particles, kEdgeReach, v, margin);
+        edges.rect = meshEdgeRect(context.host.occluders, *frame.particles, context.host.camera, frame.shared->target.size);
         if (edges.rect.z > 0) edges_ = std::move(edges);
     }
 
@@ -202,13 +186,14 @@ TechniqueEntry particlesTechnique() {
     return {.name = "particles",
             .help = "sorted soft billboards, each a closed-form slab of its kernel lit through the light slices",
             .sliceDeposit = true,
+            .edges = true,
             .settings = specsOf(kParticlesFields),
             .read = readerOf(kParticlesFields),
             .idle =
                 [](const std::any& read, const MediaRenderSettings& shared) {
                     std::vector<std::string> idle = idleOf(kParticlesFields)(read, shared);
-                    if (!offscreenMedia(shared) && std::find(idle.begin(), idle.end(), "mixed_resolution") == idle.end())
-                        idle.push_back("mixed_resolution");  // it redraws a reduced image's edges: full resolution has none
+                    // The per-fragment pass draws no edges again.
+                    if (std::any_cast<const ParticlesSettings&>(read).lighting == ParticleLighting::Fragment) idle.push_back("mixed_resolution");
                     return idle;
                 },
             .create = [] { return std::make_unique<ParticlesTechnique>(); },

@@ -28,10 +28,6 @@ struct ParticlesSettings {
     // Integrate the light's transmittance over each particle's layer (off: take it at one point:
     // faster (docs/PERFORMANCE.md), less exact for dense particles).
     bool layerLight = true;
-    // With per-particle lighting at a reduced media_scale: draw the splats again at full
-    // resolution at the reduced target's edges where a mesh reaches into the medium (off: those
-    // pixels are upsampled, and a thin mesh there shows a seam).
-    bool mixedResolution = true;
 
     static ParticlesSettings forTier(QualityTier tier);
 };

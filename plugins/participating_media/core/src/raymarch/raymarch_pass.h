@@ -4,6 +4,7 @@
 // transmittance is spent. Light comes from the light slices and the mesh shadow maps.
 #include <memory>
 
+#include "common/lit_media_inputs.h"
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/fullscreen_pass.h"
@@ -21,6 +22,21 @@ public:
     // Marches `textures`, which hold `grid` (whose corner is world space; the frame origin is the camera's).
     gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const VoxelGrid& grid, const RaymarchGrid& textures, int maxSteps,
                             const MediaTarget& target);
+
+    // What one march needs besides its target (the main pass's and the edges').
+    struct March {
+        const gpu::FullscreenPass* pass = nullptr;
+        GraphFrame* context = nullptr;
+        const RaymarchGrid* textures = nullptr;
+        glm::vec3 corner{0.0f}, extent{0.0f};
+        float voxel = 0.0f;
+        int maxSteps = 1;
+        bool rayleigh = false;
+    };
+    March march(GraphFrame& context, const VoxelGrid& grid, const RaymarchGrid& textures, int maxSteps);
+    // Over `size` texels of `framebuffer` under `state`: texel p is the viewport's pixel p · scale + offset.
+    static void draw(const gpu::PassResources& resources, const LitMediaInputs& d, const March& m, GLuint framebuffer, glm::ivec2 size,
+                     glm::vec2 scale, glm::vec2 offset, const gpu::PipelineState& state);
 
 private:
     gpu::FullscreenPass pass_;

@@ -4,6 +4,8 @@
 
 #include "common/shared_frame.h"
 #include "nimbus/base/settings.h"
+#include "nimbus/media/medium_footprint.h"
+#include "raymarch/raymarch_edges_pass.h"
 #include "raymarch/raymarch_noise_pass.h"
 #include "raymarch/raymarch_pass.h"
 #include "raymarch/voxel_grid.h"
@@ -54,7 +56,16 @@ public:
         const RaymarchSettings own = techniqueSettings<RaymarchSettings>(*frame.settings);
         if (!pass_) pass_ = std::make_unique<RaymarchPass>();
         const int steps = own.raymarchSteps > 0 ? own.raymarchSteps : kDefaultRaymarchSteps;
+        edgeRect_ = frame.settings->upsampleOnly ? glm::ivec4(0)
+                                                 : meshEdgeRect(context.host.occluders, *frame.particles, context.host.camera, frame.shared->target.size);
+        march_ = pass_->march(context, grid_, textures_, steps);
         return pass_->add(graph, context, grid_, textures_, steps, frame.shared->target);
+    }
+
+    // Mixed resolution where a mesh enters the particles (a volume's box draws no edges again).
+    glm::ivec4 edgeRect() const override { return edgeRect_; }
+    gpu::ResourceHandle addEdges(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame&, const EdgeTarget& edges) override {
+        return addRaymarchEdges(graph, context, march_, edges);
     }
 
 private:
@@ -63,6 +74,8 @@ private:
     ParticleSlices slices_;
     std::unique_ptr<RaymarchNoisePass> noisePass_;
     std::unique_ptr<RaymarchPass> pass_;
+    glm::ivec4 edgeRect_{0};      // this frame's, as addMedia planned it
+    RaymarchPass::March march_;   // this frame's march, for the edges
 };
 
 }  // namespace
@@ -72,6 +85,7 @@ TechniqueEntry raymarchTechnique() {
             .help = "the particles and volumes voxelised each frame (noise volumes on the GPU) and the grid ray-marched per pixel, lit through the light slices",
             .sliceDeposit = true,
             .volumes = true,
+            .edges = true,
             .settings = specsOf(kRaymarchFields),
             .read = readerOf(kRaymarchFields),
             .create = [] { return std::make_unique<RaymarchTechnique>(); },

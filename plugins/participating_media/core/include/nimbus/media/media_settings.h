@@ -32,6 +32,9 @@ struct MediaRenderSettings {
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     bool mediaScaleAuto = false;  // automaticMediaScale (media_renderer.h)
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2
+    // mixed_resolution=off: a reduced image is upsampled everywhere, its edges where a mesh enters
+    // the medium not drawn again at full resolution (MediaTechnique::addEdges).
+    bool upsampleOnly = false;
     // The multiple-scattering model's grid (common/environment_grid.h), for frames of the multiple
     // model; zero: the defaults below.
     int scatteringVoxels = 0;  // voxels along the medium's longest side

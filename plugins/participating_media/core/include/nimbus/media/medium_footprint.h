@@ -39,6 +39,15 @@ std::vector<std::uint8_t> billboardsMeeting(const ParticleSet& particles, const 
 // grown by `margin`; width 0 where none does.
 glm::ivec4 nearMeshRect(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach, const gpu::View& view, int margin);
 
+// Mixed resolution (MediaTechnique::edgeRect): where a media target of `targetSize` texels is
+// drawn again at full resolution, nearMeshRect at kEdgeReach grown by one reduced texel (the
+// upsampling's taps); width 0 at full resolution or where no mesh's box enters a particle's sphere.
+glm::ivec4 meshEdgeRect(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, const gpu::View& view, glm::ivec2 targetSize);
+// A mesh's box entering a particle's sphere: the seam's own definition. Two radii gave the same
+// seam error on wing_through_cloud and cumulus_aircraft over a 43% larger rect on the wing
+// (docs/design-notes.md).
+inline constexpr double kEdgeReach = 1.0;
+
 // The pixels two rects (x, y, width, height) share; width 0 where none.
 glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b);
 
