@@ -58,12 +58,11 @@ glm::ivec4 pixelRect(glm::dvec2 lo, glm::dvec2 hi, const gpu::View& view, int ma
     return {a.x, a.y, b.x - a.x, b.y - a.y};
 }
 
-}  // namespace
-
-glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b) {
-    const glm::ivec2 lo = glm::max(glm::ivec2(a), glm::ivec2(b));
-    const glm::ivec2 hi = glm::min(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
-    if (hi.x <= lo.x || hi.y <= lo.y) return glm::ivec4(0);
+glm::ivec4 unionRects(glm::ivec4 a, glm::ivec4 b) {
+    if (a.z <= 0) return b;
+    if (b.z <= 0) return a;
+    const glm::ivec2 lo = glm::min(glm::ivec2(a), glm::ivec2(b));
+    const glm::ivec2 hi = glm::max(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
     return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
 }
 
@@ -91,6 +90,45 @@ private:
     glm::dvec2 half_;
 };
 
+// The window pixels of a box's corners; the whole view where a corner lies behind the near plane.
+glm::ivec4 boxRect(const OccluderBox& box, const gpu::View& view, int margin) {
+    const glm::dmat4 viewMatrix(view.view), projection(view.projection);
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::dvec3 p = box.centre;
+        for (int a = 0; a < 3; ++a) p += box.axis[a] * (((corner >> a) & 1) != 0 ? box.half[a] : -box.half[a]);
+        const glm::dvec4 v = viewMatrix * glm::dvec4(p - view.origin, 1.0);
+        if (!view.orthographic && -v.z <= view.znear) return pixelRect(glm::dvec2(-1.0), glm::dvec2(1.0), view, margin);
+        const glm::dvec4 clip = projection * v;
+        lo = glm::min(lo, glm::dvec2(clip) / clip.w);
+        hi = glm::max(hi, glm::dvec2(clip) / clip.w);
+    }
+    return pixelRect(lo, hi, view, margin);
+}
+
+// Whether a box's axis-aligned hull comes within `slack` of the particles' `bounds`: only those are
+// tested particle by particle (a level of many meshes around one cloud).
+bool hullNear(const OccluderBox& box, const Aabb& bounds, glm::dvec3 slack) {
+    const glm::dvec3 hull = axisAlignedHalf(box);
+    return !bounds.empty() && !glm::any(glm::greaterThan(box.centre - hull, bounds.max + slack)) &&
+           !glm::any(glm::lessThan(box.centre + hull, bounds.min - slack));
+}
+
+// The slack hullNear needs for `reach` radii.
+glm::dvec3 reachSlack(const ParticleSet& particles, double reach) {
+    const double maxRadius = particles.empty() ? 0.0 : *std::max_element(particles.radius.begin(), particles.radius.end());
+    return glm::dvec3(std::max(reach - 1.0, 0.0) * maxRadius);
+}
+
+}  // namespace
+
+glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b) {
+    const glm::ivec2 lo = glm::max(glm::ivec2(a), glm::ivec2(b));
+    const glm::ivec2 hi = glm::min(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
+    if (hi.x <= lo.x || hi.y <= lo.y) return glm::ivec4(0);
+    return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+}
+
 glm::ivec4 billboardRect(const ParticleSet& particles, const std::vector<std::uint8_t>& which, const gpu::View& view, int margin) {
     const SphereBounds bounds(view);
     glm::dvec2 lo(1e300), hi(-1e300);
@@ -113,34 +151,13 @@ std::vector<std::uint8_t> billboardsMeeting(const ParticleSet& particles, const 
     return meets;
 }
 
-// The window pixels of a box's corners; the whole view where a corner lies behind the near plane.
-glm::ivec4 boxRect(const OccluderBox& box, const gpu::View& view, int margin) {
-    const glm::dmat4 viewMatrix(view.view), projection(view.projection);
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (int corner = 0; corner < 8; ++corner) {
-        glm::dvec3 p = box.centre;
-        for (int a = 0; a < 3; ++a) p += box.axis[a] * (((corner >> a) & 1) != 0 ? box.half[a] : -box.half[a]);
-        const glm::dvec4 v = viewMatrix * glm::dvec4(p - view.origin, 1.0);
-        if (!view.orthographic && -v.z <= view.znear) return pixelRect(glm::dvec2(-1.0), glm::dvec2(1.0), view, margin);
-        const glm::dvec4 clip = projection * v;
-        lo = glm::min(lo, glm::dvec2(clip) / clip.w);
-        hi = glm::max(hi, glm::dvec2(clip) / clip.w);
-    }
-    return pixelRect(lo, hi, view, margin);
-}
-
-glm::ivec4 unionRects(glm::ivec4 a, glm::ivec4 b) {
-    if (a.z <= 0) return b;
-    if (b.z <= 0) return a;
-    const glm::ivec2 lo = glm::min(glm::ivec2(a), glm::ivec2(b));
-    const glm::ivec2 hi = glm::max(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
-    return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
-}
-
 glm::ivec4 nearMeshRect(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach, const gpu::View& view, int margin) {
     glm::ivec4 rect(0);
+    const Aabb bounds = particleBounds(particles);
+    const glm::dvec3 slack = reachSlack(particles, reach);
     std::vector<std::uint8_t> near(particles.size());
     for (const OccluderBox& box : meshes) {
+        if (!hullNear(box, bounds, slack)) continue;
         bool any = false;
         for (std::size_t i = 0; i < particles.size(); ++i) {
             const double r = reach * particles.radius[i];
@@ -189,16 +206,10 @@ bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& li
 
 std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach) {
     std::vector<std::uint8_t> near(particles.size(), 0);
-    // Only meshes whose axis-aligned hull comes within reach of the particles' bounds are tested
-    // particle by particle (a level of many meshes around one cloud).
     const Aabb bounds = particleBounds(particles);
-    const double maxRadius = particles.empty() ? 0.0 : *std::max_element(particles.radius.begin(), particles.radius.end());
-    const glm::dvec3 slack(std::max(reach - 1.0, 0.0) * maxRadius);
+    const glm::dvec3 slack = reachSlack(particles, reach);
     for (const OccluderBox& box : meshes) {
-        const glm::dvec3 hull = axisAlignedHalf(box);
-        if (bounds.empty() || glm::any(glm::greaterThan(box.centre - hull, bounds.max + slack)) ||
-            glm::any(glm::lessThan(box.centre + hull, bounds.min - slack)))
-            continue;
+        if (!hullNear(box, bounds, slack)) continue;
         for (std::size_t i = 0; i < particles.size(); ++i) {
             const double r = reach * particles.radius[i];
             if (squaredDistance(box, particles.position[i]) < r * r) near[i] = 1;

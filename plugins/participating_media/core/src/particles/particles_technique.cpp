@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <cmath>
 
 #include "common/shared_frame.h"
 #include "nimbus/base/settings.h"
@@ -148,8 +147,7 @@ private:
     }
 
     // Mixed resolution where a mesh reaches into the medium: its silhouette and cut there need
-    // their own pixels (a thin wing has no reduced texel at its depth). One reduced texel of
-    // margin covers the upsampling's taps.
+    // their own pixels (a thin wing has no reduced texel at its depth).
     void planEdges(const GraphFrame& context, const TechniqueFrame& frame, SplatEdges edges) {
         edges.rect = meshEdgeRect(context.host.occluders, *frame.particles, context.host.camera, frame.shared->target.size);
         if (edges.rect.z > 0) edges_ = std::move(edges);
