@@ -29,7 +29,7 @@ layout(location = 2) uniform float uThreshold;  // relative depth difference tha
 #endif
 #ifdef COMPOSE_EDGES
 layout(binding = 4) uniform sampler2D uEdges;
-layout(location = 3) uniform ivec4 uEdgeRect;  // the pixels uEdges covers: x, y, width, height
+layout(location = 3) uniform ivec2 uEdgeRect;  // the first pixel uEdges covers
 #endif
 
 #ifdef COMPOSE_FOG
@@ -51,11 +51,9 @@ void main() {
     float depth = linearViewDepth(texelFetch(uSceneDepth, p, 0).r);
     vec4 layer = upsampleLayer(uLayer, uDepthUsed, gl_FragCoord.xy, uScale, depth, uThreshold);
 #ifdef COMPOSE_EDGES
-    ivec2 q = p - uEdgeRect.xy;
-    if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, uEdgeRect.zw))) {
-        vec4 edge = texelFetch(uEdges, q, 0);
-        if (edge.a >= 0.0) layer = edge;
-    }
+    // Drawn only over the edge rect (render/compose_pass.cpp scissors it), so every pixel has a texel.
+    vec4 edge = texelFetch(uEdges, p - uEdgeRect.xy, 0);
+    if (edge.a >= 0.0) layer = edge;
 #endif
 #elif defined(COMPOSE_LAYER)
     vec4 layer = texelFetch(uLayer, p, 0);

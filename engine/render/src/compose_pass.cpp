@@ -88,7 +88,7 @@ void ComposePass::draw(const gpu::FullscreenPass& pass, int variant, GLuint fram
         glProgramUniform2f(program, 1, scale.x, scale.y);
         glProgramUniform1f(program, 2, threshold);
     }
-    if (variant & kEdges) glProgramUniform4i(program, 3, edgeRect.x, edgeRect.y, edgeRect.z, edgeRect.w);
+    if (variant & kEdges) glProgramUniform2i(program, 3, edgeRect.x, edgeRect.y);
     pass.draw(framebuffer, size,
               gpu::PipelineState::blending({.enabled = true, .srcRgb = GL_ONE, .dstRgb = GL_SRC_ALPHA, .srcAlpha = GL_ZERO, .dstAlpha = GL_ONE}));
 }

@@ -8,15 +8,6 @@
 
 namespace nimbus::media {
 
-namespace {
-// Premultiplied over, only where the edge stencil is 1 (read only).
-constexpr gpu::PipelineState edgeState() {
-    gpu::PipelineState state = kMediaOver;
-    state.stencil = {.test = true, .compare = GL_EQUAL, .reference = 1, .readMask = 0xFF, .writeMask = 0x00};
-    return state;
-}
-}  // namespace
-
 gpu::ResourceHandle addParticleSplatEdges(gpu::FrameGraph& graph, GraphFrame& context, ParticleSplatPass& splats, const ParticleGpuBuffer& buffer,
                                           const ParticleLightingPass& lighting, SplatEdgeDraw draw, const EdgeTarget& edges) {
     struct Data : ParticleSplatPass::SplatInputs {
@@ -30,10 +21,7 @@ gpu::ResourceHandle addParticleSplatEdges(gpu::FrameGraph& graph, GraphFrame& co
             ParticleSplatPass::declareInputs(builder, context, draw.variant, draw.lamps, d);
         },
         [&splats, draw = std::move(draw), &context, &buffer, &lighting, rect = edges.rect](const gpu::PassResources& r, const Data& d) {
-            const gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
-            glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, r.id(d.stencil), 0);
-            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            const gpu::Framebuffer fbo = edgeFramebuffer(r.id(d.media), r.id(d.stencil));
             glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
             // The whole viewport, shifted so that the rect lands on the target: the rest is clipped.
             const gpu::View& v = context.host.camera;
@@ -47,7 +35,7 @@ gpu::ResourceHandle addParticleSplatEdges(gpu::FrameGraph& graph, GraphFrame& co
             if (ranks.empty()) return;
             splats.draw(r, d,
                         {.context = context, .buffer = buffer, .lighting = lighting, .variant = draw.variant, .flags = draw.flags, .lamps = draw.lamps},
-                        glm::vec2(1.0f), edgeState(), glm::vec2(rect.x, rect.y), ranks);
+                        glm::vec2(1.0f), onEdges(kMediaOver), glm::vec2(rect.x, rect.y), ranks);
         });
     return data.media;
 }

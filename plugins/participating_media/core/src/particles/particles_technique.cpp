@@ -126,12 +126,11 @@ private:
         const bool constant = shared.coverage * v.width * v.height < kConstantSplatPixels * static_cast<double>(frame.particles->size());
         const bool exact = own.lighting == ParticleLighting::ParticleExact;
         std::vector<std::uint8_t> nearMesh;
-        if (!constant && !context.host.occluders.empty()) nearMesh = particlesNearMeshes(context.host.occluders, *frame.particles, kCrossingReach);
-        const bool nearAny = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
-        const bool crossings = exact && nearAny && lamps.sun >= 0 && context.shadowMap.valid();
+        if (exact && !constant && lamps.sun >= 0 && context.shadowMap.valid() && !context.host.occluders.empty())
+            nearMesh = particlesNearMeshes(context.host.occluders, *frame.particles, kCrossingReach);
+        const bool crossings = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
         const bool lampRuns = lamps.lamps[0] >= 0;
-        std::vector<std::uint8_t> flags =
-            splatFlags(crossings ? nearMesh : std::vector<std::uint8_t>{}, *frame.particles, context.host.lights, lamps);
+        std::vector<std::uint8_t> flags = splatFlags(nearMesh, *frame.particles, context.host.lights, lamps);
         frame.report("exact_lighting", false);
         frame.report("constant_source", constant);
         frame.report("mesh_crossings", crossings);
@@ -141,7 +140,7 @@ private:
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
                            {.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}, lamps, flags);
         const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings};
-        if (!frame.settings->upsampleOnly && nearAny) planEdges(context, frame, {variant, flags, lamps});
+        if (!frame.settings->upsampleOnly && !constant) planEdges(context, frame, {variant, flags, lamps});
         frame.report("edge_pixels", static_cast<long long>(edges_ ? edges_->rect.z * edges_->rect.w : 0));
         return splatPass_->add(graph, context, *shared.buffer, *lightingPass_, variant, std::move(flags), lamps, shared.target);
     }

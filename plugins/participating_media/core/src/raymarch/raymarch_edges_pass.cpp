@@ -5,15 +5,6 @@
 
 namespace nimbus::media {
 
-namespace {
-// Unblended, as the main march, only where the edge stencil is 1 (read only).
-constexpr gpu::PipelineState edgeState() {
-    gpu::PipelineState state;
-    state.stencil = {.test = true, .compare = GL_EQUAL, .reference = 1, .readMask = 0xFF, .writeMask = 0x00};
-    return state;
-}
-}  // namespace
-
 gpu::ResourceHandle addRaymarchEdges(gpu::FrameGraph& graph, GraphFrame& context, const RaymarchPass::March& march, const EdgeTarget& edges) {
     struct Data : LitMediaInputs {
         gpu::ResourceHandle stencil;
@@ -28,11 +19,9 @@ gpu::ResourceHandle addRaymarchEdges(gpu::FrameGraph& graph, GraphFrame& context
             if (context.slices.valid()) d.slices = builder.read(context.slices);
         },
         [march, rect = edges.rect](const gpu::PassResources& r, const Data& d) {
-            const gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
-            glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, r.id(d.stencil), 0);
-            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
-            RaymarchPass::draw(r, d, march, fbo.id(), glm::ivec2(rect.z, rect.w), glm::vec2(1.0f), glm::vec2(rect.x, rect.y), edgeState());
+            // Unblended, as the main march.
+            const gpu::Framebuffer fbo = edgeFramebuffer(r.id(d.media), r.id(d.stencil));
+            RaymarchPass::draw(r, d, march, fbo.id(), glm::ivec2(rect.z, rect.w), glm::vec2(1.0f), glm::vec2(rect.x, rect.y), onEdges({}));
         });
     return data.media;
 }

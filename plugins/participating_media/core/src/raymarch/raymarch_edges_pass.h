@@ -3,6 +3,7 @@
 // target has an edge (mixed resolution, upsample/media_edge_stencil_pass.h).
 #include "nimbus/media/technique.h"
 #include "raymarch/raymarch_pass.h"
+#include "upsample/media_edge_stencil_pass.h"
 
 namespace nimbus::media {
 

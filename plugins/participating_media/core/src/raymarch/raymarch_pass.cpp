@@ -44,13 +44,11 @@ void RaymarchPass::draw(const gpu::PassResources& resources, const LitMediaInput
     m.pass->draw(framebuffer, size, state);
 }
 
-gpu::ResourceHandle RaymarchPass::add(gpu::FrameGraph& graph, GraphFrame& context, const VoxelGrid& grid, const RaymarchGrid& textures,
-                                      int maxSteps, const MediaTarget& target) {
+gpu::ResourceHandle RaymarchPass::add(gpu::FrameGraph& graph, GraphFrame& context, const March& m, const MediaTarget& target) {
     struct Data : LitMediaInputs {};
-    const March m = march(context, grid, textures, maxSteps);
     const auto& data = graph.addPass<Data>(
         "media_raymarch", [&](gpu::PassBuilder& builder, Data& d) { declareLitMediaInputs(builder, context, target, d); },
-        [this, m, size = target.size, scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
+        [m, size = target.size, scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
             // Every texel is written once, unblended: (in-scattered radiance, transmittance).
             const gpu::Framebuffer fbo = gpu::singleTargetFramebuffer(resources.id(d.media), GL_RGBA32F);
             draw(resources, d, m, fbo.id(), size, scale, glm::vec2(0.0f), {});

@@ -19,10 +19,6 @@ namespace nimbus::media {
 class RaymarchPass {
 public:
     RaymarchPass();
-    // Marches `textures`, which hold `grid` (whose corner is world space; the frame origin is the camera's).
-    gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const VoxelGrid& grid, const RaymarchGrid& textures, int maxSteps,
-                            const MediaTarget& target);
-
     // What one march needs besides its target (the main pass's and the edges').
     struct March {
         const gpu::FullscreenPass* pass = nullptr;
@@ -33,7 +29,9 @@ public:
         int maxSteps = 1;
         bool rayleigh = false;
     };
+    // The march of `textures`, which hold `grid` (whose corner is world space; the frame origin is the camera's).
     March march(GraphFrame& context, const VoxelGrid& grid, const RaymarchGrid& textures, int maxSteps);
+    gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const March& march, const MediaTarget& target);
     // Over `size` texels of `framebuffer` under `state`: texel p is the viewport's pixel p · scale + offset.
     static void draw(const gpu::PassResources& resources, const LitMediaInputs& d, const March& m, GLuint framebuffer, glm::ivec2 size,
                      glm::vec2 scale, glm::vec2 offset, const gpu::PipelineState& state);

@@ -59,7 +59,7 @@ public:
         edgeRect_ = frame.settings->upsampleOnly ? glm::ivec4(0)
                                                  : meshEdgeRect(context.host.occluders, *frame.particles, context.host.camera, frame.shared->target.size);
         march_ = pass_->march(context, grid_, textures_, steps);
-        return pass_->add(graph, context, grid_, textures_, steps, frame.shared->target);
+        return pass_->add(graph, context, march_, frame.shared->target);
     }
 
     // Mixed resolution where a mesh enters the particles (a volume's box draws no edges again).

@@ -18,6 +18,19 @@ constexpr gpu::PipelineState kWriteStencil{
     .stencil = {.test = true, .compare = GL_ALWAYS, .reference = 1, .readMask = 0xFF, .writeMask = 0xFF, .pass = GL_REPLACE}};
 }  // namespace
 
+gpu::Framebuffer edgeFramebuffer(GLuint color, GLuint stencil) {
+    gpu::Framebuffer fbo = gpu::createFramebuffer();
+    glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, color, 0);
+    glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, stencil, 0);
+    glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+    return fbo;
+}
+
+gpu::PipelineState onEdges(gpu::PipelineState state) {
+    state.stencil = {.test = true, .compare = GL_EQUAL, .reference = 1, .readMask = 0xFF, .writeMask = 0x00};
+    return state;
+}
+
 MediaEdgeStencilPass::MediaEdgeStencilPass()
     : pass_("media/upsample/edge_stencil.frag"), clampedNearest_(gpu::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE)) {}
 
@@ -39,10 +52,7 @@ EdgeTarget MediaEdgeStencilPass::add(gpu::FrameGraph& graph, GraphFrame& context
             d.scene = builder.read(context.sceneDepth);
         },
         [this, &context, size, scale, threshold, rect](const gpu::PassResources& r, const Data& d) {
-            const gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.color), 0);
-            glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, r.id(d.stencil), 0);
-            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            const gpu::Framebuffer fbo = edgeFramebuffer(r.id(d.color), r.id(d.stencil));
             gpu::applyPipeline(kWriteStencil);  // the clears write through its masks too
             const float notDrawn[4] = {0.0f, 0.0f, 0.0f, -1.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, notDrawn);

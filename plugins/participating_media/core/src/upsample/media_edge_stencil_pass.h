@@ -14,6 +14,11 @@ namespace nimbus::media {
 // shaders/common/upsample.glsl) are marked, so the technique can draw its medium there again at
 // full resolution behind a stencil test. The rest of the edge target says "not drawn" (alpha −1),
 // so a host takes exactly the pixels drawn, whatever its own depth arithmetic.
+// A framebuffer on an edge target: its colour and its stencil (as `color` and `stencil` resolve them).
+gpu::Framebuffer edgeFramebuffer(GLuint color, GLuint stencil);
+// `state` where the edge stencil is 1, the stencil read only: how a technique draws its edges.
+gpu::PipelineState onEdges(gpu::PipelineState state);
+
 class MediaEdgeStencilPass {
 public:
     MediaEdgeStencilPass();
