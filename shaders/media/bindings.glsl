@@ -5,7 +5,7 @@
 #define MEDIA_SLICE_VIEWS_BINDING 3  // uniform block MediaSliceViews
 #endif
 #ifndef MEDIA_SLICES_UNIT
-#define MEDIA_SLICES_UNIT 2          // sampler2DArray of the light slices
+#define MEDIA_SLICES_UNIT 2          // sampler2DArray of the light slices, one plane to a layer
 #endif
 #define MEDIA_SCENE_DEPTH_UNIT 3     // the host's scene depth (reversed Z)
 #define MEDIA_SHADOW_DEPTH_UNIT 4    // the host's mesh shadow map, read as raw depth
@@ -19,6 +19,7 @@
 #define MEDIA_VOXEL_SCATTERING_UNIT 5  // raymarch: rgb σ_t·albedo, a σ_t (sampler3D)
 #define MEDIA_VOXEL_EMISSION_UNIT 7    // raymarch: rgb σ_t·emission, a σ_t·g
 #define MEDIA_SLABS_UNIT 0
+#define MEDIA_PACKED_SLICES_UNIT 0    // light_slice_pairs.frag: the slices as the slice passes wrote them
 #define MEDIA_HOST_DEPTH_UNIT 0       // a standard-Z host depth, re-encoded by media_host_depth
 #define MEDIA_DEPTH_USED_UNIT 0       // edge_stencil.frag: the depth each reduced media texel used
 #define MEDIA_SHEET_UNIT 0            // sheets: one sheet's sums (sheet_composite.frag)

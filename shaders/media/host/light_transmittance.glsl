@@ -2,6 +2,8 @@
 // light reaches an origin-relative point p through the medium, exp(−τ). Slice k (0-based) of a view
 // holds the optical depth accumulated from the light up to view depth near + (k+1)(far − near)/K;
 // depth `near` has zero. Between slices τ is interpolated linearly, so τ is exact at every plane.
+// Layer params2.x + m of the array holds slices 2m − 1, 2m, 2m, 2m + 1 (slice −1: the near plane's
+// zero), so one fetch holds both ends of an interval: xy for an even k, zw for an odd one.
 #include "common/math.glsl"
 #include "common/light_views.glsl"
 #include "media/bindings.glsl"
@@ -14,12 +16,6 @@ layout(std140, binding = MEDIA_SLICE_VIEWS_BINDING) uniform MediaSliceViews {
 };
 layout(binding = MEDIA_SLICES_UNIT) uniform sampler2DArray mediaSlices;
 
-float mediaSliceValue(vec2 uv, float firstLayer, int k) {
-    vec4 texel = texture(mediaSlices, vec3(uv, firstLayer + float(k / 4)));
-    int c = k - 4 * (k / 4);
-    return c == 0 ? texel.x : c == 1 ? texel.y : c == 2 ? texel.z : texel.w;
-}
-
 // The optical depth one light view's slices hold at a point with clip coordinates `clip` and view
 // depth `depth` in that view. Both are linear in the point, so a host may interpolate them per vertex.
 float mediaViewOpticalDepthAt(GpuLightView v, vec4 clip, float depth) {
@@ -28,12 +24,11 @@ float mediaViewOpticalDepthAt(GpuLightView v, vec4 clip, float depth) {
     int K = int(v.params.w);
     float s = (depth - v.params.y) / (v.params.z - v.params.y) * float(K);
     if (s <= 0.0) return 0.0;
-    // Two fetches whatever s is (llvmpipe runs every branch): the enclosing slices, or the last one
-    // past the medium.
+    // The enclosing slices, or the last one past the medium.
     int k = min(int(floor(s)), K - 1);
-    float lo = k == 0 ? 0.0 : mediaSliceValue(uv, v.params2.x, max(k - 1, 0));
-    float hi = mediaSliceValue(uv, v.params2.x, k);
-    return s >= float(K) ? hi : mix(lo, hi, s - float(k));
+    vec4 pairs = texture(mediaSlices, vec3(uv, v.params2.x + float(k / 2)));
+    vec2 ends = (k & 1) == 0 ? pairs.xy : pairs.zw;
+    return s >= float(K) ? ends.y : mix(ends.x, ends.y, s - float(k));
 }
 
 // The optical depth one light view's slices hold at p.

@@ -1,7 +1,7 @@
 #version 450 core
 // Light-slice prefix (media/light_slice_prefix_pass.cpp): the optical depth up to each slice plane
-// of one light view, as the running sum of its slabs, into 4 slices per RGBA32F layer: the layout
-// media/host/light_transmittance.glsl reads.
+// of one light view, as the running sum of its slabs, into 4 slices per RGBA32F layer, as every
+// slice pass writes them (light_slice_pairs.comp rewrites them for the readers).
 #include "media/bindings.glsl"
 layout(binding = MEDIA_SLABS_UNIT) uniform sampler2DArray uSlabs;
 layout(location = 0) uniform int uFirstSlab;

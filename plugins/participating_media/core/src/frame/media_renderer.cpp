@@ -11,6 +11,7 @@
 #include "nimbus/media/gpu_bindings.h"
 #include "nimbus/media/slice_plan.h"
 #include "particles/splat_floor.h"
+#include "slices/light_slice_pairs_pass.h"
 #include "upsample/media_depth_used_pass.h"
 #include "upsample/media_edge_stencil_pass.h"
 
@@ -130,12 +131,17 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
     if (techniques_.at(settings_.mode).lightSlices) planSliceViews(context, perLight);
     for (const SliceView& v : shared.sliceViews)
         context.sliceViews.push_back(
-            gpu::packLightView(v.view, v.firstLayer, static_cast<float>(v.slices), static_cast<float>(shared.sliceResolution)));
+            gpu::packLightView(v.view, 2 * v.firstLayer, static_cast<float>(v.slices), static_cast<float>(shared.sliceResolution)));
     shared.blocks->pack(context.host, context.sliceViews, perLight);
     planScattering(context);
     stats_.sliceResolution = shared.sliceResolution;
     stats_.sliceViews = static_cast<int>(shared.sliceViews.size());
     technique_->addLightSlices(graph, context, frame_);
+    // Whichever passes drew them, the slices are read one plane to a layer (light_slice_pairs_pass.h).
+    if (context.slices.valid()) {
+        if (!slicePairsPass_) slicePairsPass_ = std::make_unique<LightSlicePairsPass>();
+        context.slices = slicePairsPass_->add(graph, shared.sliceViews, shared.sliceResolution, context.slices);
+    }
 }
 
 // Every light's slice views around the particles, with their slice counts and layers, and the

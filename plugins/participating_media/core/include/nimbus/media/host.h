@@ -100,7 +100,7 @@ struct HostFrame {
 
 // What renderLightSlices returns; valid until the next renderLightSlices.
 struct LightSlices {
-    GLuint texture = 0;  // GL_TEXTURE_2D_ARRAY RGBA32F, four slices per layer; 0: none this frame
+    GLuint texture = 0;  // GL_TEXTURE_2D_ARRAY RGBA32F, two slices per layer beside their predecessors; 0: none this frame
     GLuint views = 0;    // the MediaSliceViews uniform block (nimbus/media/gpu_bindings.h)
     // Binds both at the points the host include expects (kSliceViewsBinding, kSlicesUnit, or the
     // host's own MEDIA_SLICE_VIEWS_BINDING / MEDIA_SLICES_UNIT). Harmless when there are none.
