@@ -27,6 +27,15 @@ float linearViewDepth(float d) {
 
 // The camera ray through a window position (pixel centre = integer + 0.5): origin and unit direction,
 // both relative to the frame origin. Matches the reference renderer exactly.
+// The same ray at a point of normalised device coordinates, its direction not normalised: both are
+// linear in the NDC, so a vertex stage may hand them to its fragments noperspective.
+void cameraRayAtNdc(vec2 ndc, out vec3 origin, out vec3 direction) {
+    vec3 across = frame.cameraRight.xyz * (ndc.x * frame.cameraRight.w) + frame.cameraUp.xyz * (ndc.y * frame.cameraUp.w);
+    bool orthographic = frameOrthographic();
+    origin = orthographic ? across : vec3(0.0);
+    direction = orthographic ? frame.cameraForward.xyz : frame.cameraForward.xyz + across;
+}
+
 void cameraRay(vec2 fragCoord, out vec3 origin, out vec3 direction) {
     vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
     if (frameOrthographic()) {

@@ -30,9 +30,6 @@ void splatVertex(int rank, vec2 corner) {
     vSource = particleLight[base];
     if (!b.coversScreen) vSource += particleLight[base + 1u] * corner.x + particleLight[base + 2u] * corner.y;
 #endif
-    if (b.coversScreen) {
-        gl_Position = vec4(corner, 0.5, 1.0);
-        return;
-    }
-    gl_Position = frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);
+    gl_Position = b.coversScreen ? vec4(corner, 0.5, 1.0) : frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);
+    cameraRayAtNdc(gl_Position.xy / gl_Position.w, vRayOrigin, vRayDirection);
 }

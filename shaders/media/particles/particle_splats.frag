@@ -21,6 +21,7 @@
 #endif
 #define SPLAT_VARYING in
 #include "media/common/splat_varyings.glsl"
+#include "media/common/splat_ray.glsl"
 #include "media/common/splat_source.glsl"
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
@@ -31,21 +32,15 @@ layout(location = 0) out vec4 outColor;
 
 void main() {
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale + uFragOffset;
-    vec3 origin, dir;
-    cameraRay(fragCoord, origin, dir);
-    vec3 oc = vCentreRadius.xyz - origin;
-    float tc = dot(oc, dir);
-    vec3 perp = oc - tc * dir;
+    SplatRay r = splatRay();
     float radius = vCentreRadius.w, invRadius = 1.0 / radius;
-    float beta2 = dot(perp, perp) * invRadius * invRadius;
-    float beta = sqrt(beta2);
     float depth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
-    float tSurface = frameOrthographic() ? depth : depth / dot(dir, frame.cameraForward.xyz);
-    float segment = kernelSegment(beta, (tSurface - tc) * invRadius);
+    float tSurface = frameOrthographic() ? depth : depth / dot(r.dir, frame.cameraForward.xyz);
+    float segment = kernelSegment(r.beta, (tSurface - r.tc) * invRadius);
 #ifdef MEDIA_EYE_INSIDE
-    segment -= kernelSegment(beta, -tc * invRadius);
+    segment -= kernelSegment(r.beta, -r.tc * invRadius);
 #endif
     float alpha = oneMinusExpNeg(vSigma * radius * max(segment, 0.0));
-    vec3 source = splatSource(origin, dir, tc, perp, beta, beta2, tSurface, alpha);
+    vec3 source = splatSource(r.origin, r.dir, r.tc, r.perp, r.beta, r.beta2, tSurface, alpha);
     outColor = vec4(source * alpha, alpha);
 }

@@ -20,6 +20,7 @@
 #endif
 #define SPLAT_VARYING in
 #include "media/common/splat_varyings.glsl"
+#include "media/common/splat_ray.glsl"
 #include "media/common/splat_source.glsl"
 
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
@@ -30,14 +31,10 @@ layout(location = 0) out vec4 outColor;
 
 void main() {
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;
-    vec3 origin, dir;
-    cameraRay(fragCoord, origin, dir);
-    vec3 oc = vCentreRadius.xyz - origin;
-    float tc = dot(oc, dir);
-    vec3 perp = oc - tc * dir;
+    SplatRay r = splatRay();
+    vec3 origin = r.origin, dir = r.dir, perp = r.perp;
+    float tc = r.tc, beta2 = r.beta2, beta = r.beta;
     float radius = vCentreRadius.w, invRadius = 1.0 / radius;
-    float beta2 = dot(perp, perp) * invRadius * invRadius;
-    float beta = sqrt(beta2);
     float depth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
     // Along the ray, a plane of view depth z lies at t = z / cos θ (orthographic: t = z).
     float perDepth = frameOrthographic() ? 1.0 : 1.0 / dot(dir, frame.cameraForward.xyz);
