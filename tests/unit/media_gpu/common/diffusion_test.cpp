@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "common/environment_grid.h"
+#include "nimbus/media/volume.h"
 
 namespace nimbus::media {
 namespace {
@@ -118,6 +119,21 @@ TEST(EnvironmentGrid, KeepsTheAnswerOnlyForTheSameFrame) {
     solveEnvironmentGrid(p, {}, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {.maxSweeps = 1}, oneSweep);
     EXPECT_GT(grid.sweeps, 0);
     EXPECT_EQ(grid.texels, oneSweep.texels);
+    // The medium is compared before it is voxelized: a particle moved by less than a voxel, or a
+    // volume's noise with another seed, is another frame.
+    ParticleSet moved = p;
+    moved.position[0].x += 1e-3;
+    solveEnvironmentGrid(moved, {}, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {.maxSweeps = 1}, grid);
+    EXPECT_GT(grid.sweeps, 0);
+    std::vector<Volume> volumes{makeVolume({.shape = VolumeShape::Box, .size = glm::dvec3(2.0), .noise = NoiseField{}}, glm::dmat4(1.0),
+                                           Medium{.extinction = 2.0f}, "test")};
+    solveEnvironmentGrid(moved, volumes, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {.maxSweeps = 1}, grid);
+    EXPECT_GT(grid.sweeps, 0);
+    solveEnvironmentGrid(moved, volumes, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {.maxSweeps = 1}, grid);
+    EXPECT_EQ(grid.sweeps, 0);
+    volumes[0].noise->seed = 7;
+    solveEnvironmentGrid(moved, volumes, {.lights = &sun, .ambient = glm::vec3(0.3f)}, 16, {.maxSweeps = 1}, grid);
+    EXPECT_GT(grid.sweeps, 0);
 }
 
 }  // namespace

@@ -302,9 +302,31 @@ std::vector<glm::vec3> resampled(const EnvironmentGrid& coarse, const MediumGrid
     return out;
 }
 
-// Every number of the lighting the grid depends on, to tell whether a frame's is the last one's.
-std::vector<double> lightingKey(const EnvironmentLighting& lighting) {
-    std::vector<double> key{lighting.ambient.x, lighting.ambient.y, lighting.ambient.z};
+// Every number the grid is made from: the medium (particles and volumes, before voxelizing), the
+// grid's size and sweep budget, and the lighting. A frame with the same keeps the last answer.
+// Comparing these, not the voxelized medium, spares a frame that keeps it the voxelizing.
+std::vector<double> inputKey(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting,
+                             int voxelsAlongLongest, int maxSweeps) {
+    std::vector<double> key{static_cast<double>(voxelsAlongLongest), static_cast<double>(maxSweeps), lighting.ambient.x,
+                            lighting.ambient.y, lighting.ambient.z};
+    key.reserve(key.size() + 12 * particles.size());
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const glm::dvec3& p = particles.position[i];
+        const glm::vec3 &a = particles.albedo[i], &e = particles.emission[i];
+        key.insert(key.end(), {p.x, p.y, p.z, particles.radius[i], particles.sigma[i], a.x, a.y, a.z, e.x, e.y, e.z, particles.g[i]});
+    }
+    for (const Volume& v : volumes) {
+        key.insert(key.end(), {static_cast<double>(v.shape), v.size.x, v.size.y, v.size.z, v.drift.x, v.drift.y, v.drift.z,
+                               v.medium.extinction, v.medium.albedo.x, v.medium.albedo.y, v.medium.albedo.z, v.medium.g,
+                               v.medium.emission.x, v.medium.emission.y, v.medium.emission.z});
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) key.push_back(v.world[c][r]);
+        if (const std::optional<NoiseField>& n = v.noise)
+            key.insert(key.end(), {static_cast<double>(n->kind), static_cast<double>(n->octaves), n->frequency, static_cast<double>(n->seed),
+                                   n->gain, n->coverage, n->falloff});
+        else
+            key.push_back(-1.0);
+    }
     if (lighting.lights != nullptr)
         for (const Light& l : *lighting.lights)
             key.insert(key.end(), {static_cast<double>(l.kind), l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
@@ -321,12 +343,8 @@ std::vector<double> lightingKey(const EnvironmentLighting& lighting) {
 
 void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting,
                           int voxelsAlongLongest, DiffusionSolve solve, EnvironmentGrid& grid) {
-    const MediumGrid medium = voxelizeMedium(particles, volumes, voxelsAlongLongest);
-    std::vector<double> key = lightingKey(lighting);
-    // The same medium and light as the last frame: the same answer, without solving again.
-    if (!grid.texels.empty() && grid.size == medium.size && grid.min == medium.min && grid.maxSweeps == solve.maxSweeps &&
-        grid.lighting == key && grid.sigma == medium.sigma && grid.sigmaG == medium.sigmaG && grid.scattering == medium.scattering &&
-        grid.emission == medium.emission) {
+    std::vector<double> key = inputKey(particles, volumes, lighting, voxelsAlongLongest, solve.maxSweeps);
+    if (!grid.texels.empty() && grid.inputs == key) {
         grid.sweeps = 0;
         return;
     }
@@ -337,13 +355,8 @@ void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume
         solveEnvironmentGrid(particles, volumes, lighting, voxelsAlongLongest / 2, solve, coarse);
         solve.coarser = &coarse;
     }
-    buildEnvironmentGrid(medium, lighting, solve, grid);
-    grid.maxSweeps = solve.maxSweeps;
-    grid.lighting = std::move(key);
-    grid.sigma = medium.sigma;
-    grid.sigmaG = medium.sigmaG;
-    grid.scattering = medium.scattering;
-    grid.emission = medium.emission;
+    buildEnvironmentGrid(voxelizeMedium(particles, volumes, voxelsAlongLongest), lighting, solve, grid);
+    grid.inputs = std::move(key);
 }
 
 MediumGrid voxelizeMedium(const ParticleSet& particles, const std::vector<Volume>& volumes, int voxelsAlongLongest) {

@@ -38,11 +38,9 @@ struct EnvironmentGrid {
     std::vector<glm::vec3> fluence;  // φ
     int sweeps = 0;                  // the diffusion solve's sweeps this frame (0: the last frame's answer kept)
     float rescatter = 0.0f;          // ω·(1 − T̄) over the voxels, weighted by their first scattering: the share of it that scatters again
-    // What the answer was solved for (solveEnvironmentGrid): a frame with the same keeps it.
-    int maxSweeps = 0;  // the sweep budget (scattering_sweeps): another budget is another answer
-    std::vector<double> lighting;
-    std::vector<float> sigma, sigmaG;
-    std::vector<glm::vec3> scattering, emission;
+    // What the answer was solved for (solveEnvironmentGrid): the medium, grid size, sweep budget and
+    // lighting, every number of them. A frame with the same keeps it.
+    std::vector<double> inputs;
 
     bool empty() const { return size.x == 0; }
 };
