@@ -2,6 +2,7 @@
 // particle: particle_splats.frag and sheets/sheet_splats.frag. Needs splat_varyings (as in).
 struct SplatRay {
     vec3 origin, dir;
+    float perDepth;  // ray distance per unit of view depth, 1/cos θ (1 orthographic: vRayDirection is then unit)
     float tc;     // the ray's distance to its closest approach to the centre
     vec3 perp;    // the centre's offset from the ray there
     float beta2;  // |perp|² in radii²
@@ -11,7 +12,8 @@ struct SplatRay {
 SplatRay splatRay() {
     SplatRay r;
     r.origin = vRayOrigin;
-    r.dir = normalize(vRayDirection);
+    r.perDepth = length(vRayDirection);  // its component along the camera's forward axis is 1
+    r.dir = vRayDirection / r.perDepth;
     vec3 oc = vCentreRadius.xyz - r.origin;
     r.tc = dot(oc, r.dir);
     r.perp = oc - r.tc * r.dir;

@@ -35,7 +35,7 @@ void main() {
     SplatRay r = splatRay();
     float radius = vCentreRadius.w, invRadius = 1.0 / radius;
     float depth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
-    float tSurface = frameOrthographic() ? depth : depth / dot(r.dir, frame.cameraForward.xyz);
+    float tSurface = depth * r.perDepth;
     float segment = kernelSegment(r.beta, (tSurface - r.tc) * invRadius);
 #ifdef MEDIA_EYE_INSIDE
     segment -= kernelSegment(r.beta, -r.tc * invRadius);

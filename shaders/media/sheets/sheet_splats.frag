@@ -37,7 +37,7 @@ void main() {
     float radius = vCentreRadius.w, invRadius = 1.0 / radius;
     float depth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
     // Along the ray, a plane of view depth z lies at t = z / cos θ (orthographic: t = z).
-    float perDepth = frameOrthographic() ? 1.0 : 1.0 / dot(dir, frame.cameraForward.xyz);
+    float perDepth = r.perDepth;
     float tSurface = depth * perDepth;
     float t0 = uSheet.x * perDepth, t1 = min(uSheet.y * perDepth, tSurface);
     if (!(t1 > t0)) discard;  // the mesh lies in front of this sheet here
