@@ -25,25 +25,19 @@ float linearViewDepth(float d) {
     return d + frame.depthParams.x > 0.0 ? frame.depthParams.y / (d + frame.depthParams.x) : 1e30;
 }
 
-// The camera ray through a window position (pixel centre = integer + 0.5): origin and unit direction,
-// both relative to the frame origin. Matches the reference renderer exactly.
-// The same ray at a point of normalised device coordinates, its direction not normalised: both are
-// linear in the NDC, so a vertex stage may hand them to its fragments noperspective.
+// The camera ray at a point of normalised device coordinates, relative to the frame origin, its
+// direction not normalised: both are linear in the NDC, so a vertex stage may hand them to its
+// fragments noperspective.
 void cameraRayAtNdc(vec2 ndc, out vec3 origin, out vec3 direction) {
-    vec3 across = frame.cameraRight.xyz * (ndc.x * frame.cameraRight.w) + frame.cameraUp.xyz * (ndc.y * frame.cameraUp.w);
+    vec3 right = frame.cameraRight.xyz * (ndc.x * frame.cameraRight.w), up = frame.cameraUp.xyz * (ndc.y * frame.cameraUp.w);
     bool orthographic = frameOrthographic();
-    origin = orthographic ? across : vec3(0.0);
-    direction = orthographic ? frame.cameraForward.xyz : frame.cameraForward.xyz + across;
+    origin = orthographic ? right + up : vec3(0.0);
+    direction = orthographic ? frame.cameraForward.xyz : frame.cameraForward.xyz + right + up;
 }
 
+// The camera ray through a window position (pixel centre = integer + 0.5): origin and unit direction,
+// both relative to the frame origin. Matches the reference renderer exactly.
 void cameraRay(vec2 fragCoord, out vec3 origin, out vec3 direction) {
-    vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
-    if (frameOrthographic()) {
-        origin = frame.cameraRight.xyz * (ndc.x * frame.cameraRight.w) + frame.cameraUp.xyz * (ndc.y * frame.cameraUp.w);
-        direction = frame.cameraForward.xyz;
-    } else {
-        origin = vec3(0.0);
-        direction = normalize(frame.cameraForward.xyz + frame.cameraRight.xyz * (ndc.x * frame.cameraRight.w) +
-                              frame.cameraUp.xyz * (ndc.y * frame.cameraUp.w));
-    }
+    cameraRayAtNdc(fragCoord * frame.viewport.zw * 2.0 - 1.0, origin, direction);
+    if (!frameOrthographic()) direction = normalize(direction);
 }

@@ -6,6 +6,10 @@ namespace nimbus::media {
 
 void declareLitMediaInputs(gpu::PassBuilder& builder, const GraphFrame& context, const MediaTarget& target, LitMediaInputs& d) {
     d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, target.size.x, target.size.y, 1, 1});
+    readLitMediaInputs(builder, context, d);
+}
+
+void readLitMediaInputs(gpu::PassBuilder& builder, const GraphFrame& context, LitMediaInputs& d) {
     d.depth = builder.read(context.sceneDepth);
     if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
     if (context.slices.valid()) d.slices = builder.read(context.slices);

@@ -16,6 +16,8 @@ struct LitMediaInputs {
 
 // In a pass's setup: creates the target (RGBA32F, target.size) and reads the rest when the frame has them.
 void declareLitMediaInputs(gpu::PassBuilder& builder, const GraphFrame& context, const MediaTarget& target, LitMediaInputs& d);
+// The reads alone, for a pass that draws into a target it did not create (the edges).
+void readLitMediaInputs(gpu::PassBuilder& builder, const GraphFrame& context, LitMediaInputs& d);
 // In its execution: binds depth, shadow map and slices at their units (gpu_bindings.h).
 void bindLitMediaInputs(const gpu::PassResources& resources, const LitMediaInputs& d);
 

@@ -82,7 +82,7 @@ const SharedField kSharedFields[] = {
      Acts::Everywhere},
     {{{.key = "upsample_threshold",
        .help = "offscreen media: relative depth difference the upsampling treats as an edge (where a mesh reaches into the "
-               "medium, the per-particle tiers draw their particles there again at full resolution)",
+               "medium, the modes of mixed_resolution draw the medium there again at full resolution)",
        .type = SettingType::Number, .min = 1e-4, .max = 10.0, .defaultValue = "0.2",
        .actsWhen = "with media_scale below 1 or auto"},
       &setNumber<&MediaRenderSettings::upsampleThreshold>, &offscreenMedia},

@@ -137,7 +137,8 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
     stats_.sliceResolution = shared.sliceResolution;
     stats_.sliceViews = static_cast<int>(shared.sliceViews.size());
     technique_->addLightSlices(graph, context, frame_);
-    // Whichever passes drew them, the slices are read one plane to a layer (light_slice_pairs_pass.h).
+    // Whichever passes drew them, the slices are read as pairs, each plane beside the one before it
+    // (light_slice_pairs_pass.h).
     if (context.slices.valid()) {
         if (!slicePairsPass_) slicePairsPass_ = std::make_unique<LightSlicePairsPass>();
         context.slices = slicePairsPass_->add(graph, shared.sliceViews, shared.sliceResolution, context.slices);

@@ -14,9 +14,7 @@ gpu::ResourceHandle addRaymarchEdges(gpu::FrameGraph& graph, GraphFrame& context
         [&](gpu::PassBuilder& builder, Data& d) {
             d.media = builder.write(edges.color);
             d.stencil = builder.read(edges.stencil);
-            d.depth = builder.read(context.sceneDepth);
-            if (context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
-            if (context.slices.valid()) d.slices = builder.read(context.slices);
+            readLitMediaInputs(builder, context, d);
         },
         [march, rect = edges.rect](const gpu::PassResources& r, const Data& d) {
             // Unblended, as the main march.
