@@ -2,7 +2,7 @@
 // particle: particle_splats.frag and sheets/sheet_splats.frag. Needs splat_varyings (as in).
 struct SplatRay {
     vec3 origin, dir;
-    float perDepth;  // ray distance per unit of view depth, 1/cos θ (1 orthographic: vRayDirection is then unit)
+    float perDepth;  // ray distance per unit of view depth, 1/cos θ (1 orthographic)
     float tc;     // the ray's distance to its closest approach to the centre
     vec3 perp;    // the centre's offset from the ray there
     float beta2;  // |perp|² in radii²
@@ -12,8 +12,9 @@ struct SplatRay {
 SplatRay splatRay() {
     SplatRay r;
     r.origin = vRayOrigin;
-    r.perDepth = length(vRayDirection);  // its component along the camera's forward axis is 1
-    r.dir = vRayDirection / r.perDepth;
+    float length_ = length(vRayDirection);
+    r.dir = vRayDirection / length_;
+    r.perDepth = length_ / dot(vRayDirection, frame.cameraForward.xyz);
     vec3 oc = vCentreRadius.xyz - r.origin;
     r.tc = dot(oc, r.dir);
     r.perp = oc - r.tc * r.dir;

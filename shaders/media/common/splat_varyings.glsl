@@ -2,10 +2,10 @@
 // SPLAT_VARYING as `out` in a vertex shader and `in` in a fragment shader before including this.
 flat SPLAT_VARYING vec4 vCentreRadius;  // origin-relative centre, radius
 flat SPLAT_VARYING float vSigma;
-// The pixel's camera ray (common/frame.glsl cameraRayAtNdc), its direction not normalised: linear
-// on the screen, so the vertices hand it over and a fragment only normalises it.
-noperspective SPLAT_VARYING vec3 vRayOrigin;
-noperspective SPLAT_VARYING vec3 vRayDirection;
+// The pixel's camera ray, its direction not normalised (splat_vertex.glsl): a point on the quad
+// (perspective) or cameraRayAtNdc's (orthographic and screen-covering quads, whose w is 1).
+SPLAT_VARYING vec3 vRayOrigin;
+SPLAT_VARYING vec3 vRayDirection;
 flat SPLAT_VARYING float vFog;           // the fog factor at the centre (common/fog.glsl)
 #ifdef SPLAT_CONSTANT
 flat SPLAT_VARYING vec4 vSource;        // F0

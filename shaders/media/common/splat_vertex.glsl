@@ -30,6 +30,13 @@ void splatVertex(int rank, vec2 corner) {
     vSource = particleLight[base];
     if (!b.coversScreen) vSource += particleLight[base + 1u] * corner.x + particleLight[base + 2u] * corner.y;
 #endif
-    gl_Position = b.coversScreen ? vec4(corner, 0.5, 1.0) : frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);
-    cameraRayAtNdc(gl_Position.xy / gl_Position.w, vRayOrigin, vRayDirection);
+    vec3 onQuad = pr.xyz + b.right * corner.x + b.up * corner.y;
+    gl_Position = b.coversScreen ? vec4(corner, 0.5, 1.0) : frame.viewProjection * vec4(onQuad, 1.0);
+    // A perspective quad's corner is a point of its pixel's ray from the eye (the frame origin), and
+    // interpolated perspective-correctly it stays one wherever the quad is clipped. Passed as the
+    // ray through its screen position, linear on the screen (noperspective), the rays of particles
+    // around the eye came out wrong (docs/design-notes.md).
+    vRayOrigin = vec3(0.0);
+    vRayDirection = onQuad;
+    if (b.coversScreen || frameOrthographic()) cameraRayAtNdc(gl_Position.xy / gl_Position.w, vRayOrigin, vRayDirection);
 }
