@@ -281,6 +281,26 @@ TEST(SandboxRender, QualityIsReportedInTheStats) {
     }
 }
 
+// A lamp inside the medium: balanced keeps its splats (their near field takes the exact tier's
+// quadrature and neighbour order) unless exact_near_lamps asks for per-fragment shading.
+TEST(SandboxRender, BalancedKeepsItsSplatsAroundALampInsideTheMedium) {
+    TempFolder out;
+    for (const bool exactNearLamps : {false, true}) {
+        const fs::path json = out / "stats.json";
+        std::vector<std::string> args{"render", (kContent / "scenes/campfire.gltf").string(), "--time", "4", "--size", "48x27",
+                                      "--quality", "balanced", "--stats", json.string(), "--out", (out / "lamp.png").string()};
+        if (exactNearLamps) args.insert(args.end(), {"--set", "exact_near_lamps=on"});
+        const ProcessResult r = sandbox(args);
+        ASSERT_EQ(r.exitCode, 0) << explain(r);
+        std::ifstream in(json);
+        const nlohmann::json stats = nlohmann::json::parse(in);
+        EXPECT_EQ(stats.at("media_exact_lighting").get<bool>(), exactNearLamps);
+        if (!exactNearLamps) {
+            EXPECT_GT(stats.at("media_lamp_particles").get<long long>(), 0);
+        }
+    }
+}
+
 TEST(SandboxSettings, ListsEverySettingWithWhereItActs) {
     const ProcessResult r = sandbox({"settings"});
     ASSERT_EQ(r.exitCode, 0) << explain(r);

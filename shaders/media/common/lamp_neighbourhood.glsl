@@ -12,8 +12,7 @@ struct LayerOrder {
     float tHidden;  // a particle whose closest point lies beyond this is not drawn (classic billboards)
 };
 
-const int LAMP_NEAR_NODES = 8;  // local_light_segment.glsl's quadrature: in φ around the lamp,
-const int LAMP_NODES = 14;      // then three in t on each side beyond it
+#include "media/common/lamp_quadrature.glsl"
 
 // Light `light`'s neighbour list: how many, where they start, and the reach within which it is complete.
 struct LampList {
@@ -44,29 +43,57 @@ float lampListWeight(LampList list, int light, vec3 x) {
 // e^50 their transmittance (at most e^−50) leaves nothing a float can give back. Uncapped, a dense
 // neighbour's e^τ overflows to inf, and the blend's 0 · inf makes NaN pixels.
 const float MAX_LAMP_LOG_FACTOR = 50.0;
+
+// Listed neighbour n of another rank as the layer's ray meets it: its chord, the part of it that is
+// drawn [u0, u1] (as particles.frag clips it) and whether it is drawn after the layer; valid is
+// false where it changes nothing.
+struct LampNeighbour {
+    Chord c;
+    float radius, sigma, u0, u1;
+    bool drawnAfter, valid;
+};
+
+LampNeighbour lampNeighbour(LampList list, uint n, vec3 origin, vec3 dir, LayerOrder layer) {
+    LampNeighbour q;
+    q.valid = false;
+    int rank = int(lampWords[list.entries + 2u * n + 1u]);
+    if (rank == layer.rank) return q;  // its own attenuation is already exact
+    int index = int(lampWords[list.entries + 2u * n]);
+    vec4 pr = particles[index].positionRadius;
+    q.c = chordOf(origin, dir, pr.xyz, pr.w);
+    if (q.c.halfChord <= 0.0 || q.c.tClosest > layer.tHidden) return q;
+    q.u0 = max(0.0, q.c.tClosest - q.c.halfChord) - q.c.tClosest;
+    q.u1 = min(layer.tEnd - q.c.tClosest, q.c.halfChord);
+    q.radius = pr.w;
+    q.sigma = particles[index].albedoSigma.w;
+    q.drawnAfter = rank > layer.rank;
+    q.valid = q.u1 > q.u0;
+    return q;
+}
+
+// Neighbour q's share of the log factor for light scattered at ray parameter t.
+float lampNeighbourLogFactor(LampNeighbour q, float t) {
+    float split = clamp(t - q.c.tClosest, q.u0, q.u1);
+    return q.drawnAfter ? q.sigma * chordIntegral(q.c, q.radius, split, q.u1) : -q.sigma * chordIntegral(q.c, q.radius, q.u0, split);
+}
+
+// The summed log factor at x, weighted where the list is complete and capped.
+float lampLogFactorAt(LampList list, int light, vec3 x, float sum) {
+    return min(sum * lampListWeight(list, light, x), MAX_LAMP_LOG_FACTOR);
+}
+
+// The factors at each of a quadrature's points t[j] (local_light_segment.glsl, blocks).
 void lampOrderCorrection(int light, vec3 origin, vec3 dir, float t[LAMP_NODES], LayerOrder layer,
                          out float logFactor[LAMP_NODES]) {
     for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] = 0.0;
     LampList list = lampList(light);
     if (list.count == 0u) return;
     for (uint n = 0u; n < list.count; ++n) {
-        int rank = int(lampWords[list.entries + 2u * n + 1u]);
-        if (rank == layer.rank) continue;  // its own attenuation is already exact
-        int q = int(lampWords[list.entries + 2u * n]);
-        vec4 pr = particles[q].positionRadius;
-        Chord c = chordOf(origin, dir, pr.xyz, pr.w);
-        if (c.halfChord <= 0.0 || c.tClosest > layer.tHidden) continue;
-        float u0 = max(0.0, c.tClosest - c.halfChord) - c.tClosest;  // as particles.frag clips it
-        float u1 = min(layer.tEnd - c.tClosest, c.halfChord);
-        if (u1 <= u0) continue;
-        float sigma = particles[q].albedoSigma.w;
-        bool drawnAfter = rank > layer.rank;
-        for (int j = 0; j < LAMP_NODES; ++j) {
-            float split = clamp(t[j] - c.tClosest, u0, u1);
-            logFactor[j] += drawnAfter ? sigma * chordIntegral(c, pr.w, split, u1) : -sigma * chordIntegral(c, pr.w, u0, split);
-        }
+        LampNeighbour q = lampNeighbour(list, n, origin, dir, layer);
+        if (!q.valid) continue;
+        for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] += lampNeighbourLogFactor(q, t[j]);
     }
-    for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] = min(logFactor[j] * lampListWeight(list, light, origin + dir * t[j]), MAX_LAMP_LOG_FACTOR);
+    for (int j = 0; j < LAMP_NODES; ++j) logFactor[j] = lampLogFactorAt(list, light, origin + dir * t[j], logFactor[j]);
 }
 
 // Where the layer's own listed particles lie along the ray (their chords from the eye to

@@ -2,23 +2,56 @@
 // sheets/sheet_splats.frag): the lighting pass's fit (particle_lighting.comp), with the sun's phase
 // function and the lamps (MEDIA_FRAGMENT_LAMPS) at the pixel's own ray, towards the fog colour.
 // Needs common/math, frame, lights, media optics, kernel_table, particle_light_layout and
-// splat_varyings (as in); with MEDIA_FRAGMENT_LAMPS also slices and spot_cone, with it or
-// MEDIA_MESH_CROSSINGS light_views and mesh_shadow.
+// splat_varyings (as in); with MEDIA_FRAGMENT_LAMPS also slices, spot_cone and lamp_quadrature
+// (with SPLAT_LAMP_ORDER particle_data and lamp_neighbourhood), with it or MEDIA_MESH_CROSSINGS
+// light_views and mesh_shadow.
 #ifdef MEDIA_FRAGMENT_LAMPS
 // Lamp `light`'s light scattered by the particle's visible segment [lo, hi] of the ray (u from the
 // closest point), per unit albedo and radiance, as the layer's source: σ∫ρ(u)e^−τ(u)·S(u)du / α
 // with τ(u) the particle's own optical depth in front of u and S = shape·phase·V·T/d² (V the mesh
-// shadow map's visibility, T the slices' transmittance from the lamp). Where the ray passes the lamp within two deviations, 1/d²
-// peaks far more sharply than the kernel varies: LAMP_NODES Gauss–Legendre nodes in φ over the
-// part inside a spot's cone, u = u_l + b·tan φ (u_l the lamp's closest approach, b its distance),
-// as local_light_segment.glsl does with more, each with its own T and e^−τ (inside a dense
-// particle both fall steeply away from the lamp). Elsewhere S varies slowly and is taken at the
-// shading point p.
-const int LAMP_NODES = 6;
-const float kLampNodes[6] = float[](-0.9324695142, -0.6612093865, -0.2386191861, 0.2386191861, 0.6612093865, 0.9324695142);
-const float kLampWeights[6] = float[](0.1713244924, 0.3607615730, 0.4679139346, 0.4679139346, 0.3607615730, 0.1713244924);
+// shadow map's visibility, T the slices' transmittance from the lamp).
 
-float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi, float beta, float alpha, vec3 p) {
+// Where the ray passes the lamp within two deviations, 1/d² peaks far more sharply than the kernel
+// varies: the exact tier's quadrature (lamp_quadrature.glsl) over the part inside a spot's cone,
+// each node with its own T and e^−τ (inside a dense particle both fall steeply away from the lamp).
+// With SPLAT_LAMP_ORDER (particle splats, one particle a composited layer) each node's light also
+// takes the exact attenuation by the lamp's other listed neighbours (lamp_neighbourhood.glsl):
+// compositing order dims a neighbour's light by whole particles across the lamp's peak (a lamp in
+// a τ 3 cloud erred 48% without it).
+float nearLampSource(int light, vec3 origin, vec3 dir, float tc, vec2 lit, float lo, float tSurface, float beta, float alpha, bool near) {
+    float radius = vCentreRadius.w;
+    vec3 lamp = lights[light].position.xyz;
+    LampNodes q = lampNodes(light, origin, dir, lit + tc, tc, radius);
+#ifdef SPLAT_LAMP_ORDER
+    LampList list = lampList(light);
+    LayerOrder layer = LayerOrder(vLayer.x, vLayer.y, tSurface, 1e30);
+#endif
+    float k = KERNEL_FALLOFF / (radius * radius), entry = kernelSegment(beta, lo / radius), sum = 0.0;
+    // A loop, so llvmpipe leaves it after one pass where no lane is near (an if runs under a mask
+    // whatever the lanes, and the compiler turns a loop it can prove runs at most once into one).
+    int j = 0;
+    do {
+        vec2 node = lampNode(q, j);
+        float u = node.x - tc;
+        vec3 x = origin + dir * node.x;
+        float depth = vSigma * radius * max(kernelSegment(beta, u / radius) - entry, 0.0) + mediumOpticalDepth(light, x);
+#ifdef SPLAT_LAMP_ORDER
+        float order = 0.0;
+        for (uint n = 0u; n < (near ? list.count : 0u); ++n) {
+            LampNeighbour neighbour = lampNeighbour(list, n, origin, dir, layer);
+            if (neighbour.valid) order += lampNeighbourLogFactor(neighbour, node.x);
+        }
+        depth -= lampLogFactorAt(list, light, x, order);
+#endif
+        // Near the lamp its light comes from within about its distance, not from the whole kernel.
+        float visibility = lights[light].spot.z >= 0.0 ? meshVisibilityTap(light, x, 0.1 * distance(x, lamp)) : 1.0;
+        sum += node.y * exp(-k * u * u - depth) * phaseValue(vPhase.x, vPhase.y, normalize(lamp - x), dir) * lightShape(light, x) * visibility;
+    } while (++j < (near ? LAMP_NODES : 0));  // sum is read only where near
+    return vSigma * exp(-k * (radius * radius * beta * beta)) * sum / alpha;
+}
+
+// Elsewhere S varies slowly over the segment and is taken at the shading point p.
+float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi, float tSurface, float beta, float alpha, vec3 p) {
     float radius = vCentreRadius.w;
     vec2 lit = spotConeInterval(light, origin, dir, Chord(tc, 0.0, 0.0), lo, hi);
     if (!(lit.y > lit.x)) return 0.0;
@@ -26,25 +59,12 @@ float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi,
     vec3 toLamp = lamp - origin;
     float uLamp = dot(toLamp, dir) - tc;
     float s = radius / 3.0;
-    float b = max(length(toLamp - (uLamp + tc) * dir), 1e-4 * radius);
-    bool near = b < 2.0 * s && uLamp > lo - 2.0 * s && uLamp < hi + 2.0 * s && alpha > 0.0;
-    float phi0 = atan((lit.x - uLamp) / b), phi1 = atan((lit.y - uLamp) / b);
-    float mid = 0.5 * (phi0 + phi1), half_ = 0.5 * (phi1 - phi0);
-    float k = KERNEL_FALLOFF / (radius * radius), sum = 0.0;
-    float entry = kernelSegment(beta, lo / radius);
-    // A loop, so llvmpipe leaves it after one pass where no lane is near (an if runs under a mask
-    // whatever the lanes); do-while, as a for loop's test costs one more masked pass.
-    int j = 0;
-    do {
-        float u = uLamp + b * tan(mid + half_ * kLampNodes[j]);
-        vec3 x = origin + dir * (tc + u);
-        float phase = phaseValue(vPhase.x, vPhase.y, normalize(lamp - x), dir);
-        float inFront = vSigma * radius * max(kernelSegment(beta, u / radius) - entry, 0.0);
-        // Near the lamp its light comes from within about its distance, not from the whole kernel.
-        float visibility = lights[light].spot.z >= 0.0 ? meshVisibilityTap(light, x, 0.1 * distance(x, lamp)) : 1.0;
-        sum += kLampWeights[j] * exp(-k * u * u - inFront - mediumOpticalDepth(light, x)) * phase * lightShape(light, x) * visibility;
-    } while (++j < (near ? LAMP_NODES : 0));  // sum is read only where near
-    if (near) return vSigma * exp(-k * (radius * radius * beta * beta)) * sum * half_ / (b * alpha);
+    float b = length(toLamp - (uLamp + tc) * dir);
+    // A spot's cone edge that cuts the segment lights part of it only: the quadrature there too.
+    bool cut = lit.x > lo || lit.y < hi;
+    bool near = (cut || (b < 2.0 * s && uLamp > lo - 2.0 * s && uLamp < hi + 2.0 * s)) && alpha > 0.0;
+    float nearSource = nearLampSource(light, origin, dir, tc, lit, lo, tSurface, beta, alpha, near);
+    if (near) return nearSource;
     vec3 toP = lamp - p;
     float d2 = max(dot(toP, toP), 1e-12);
     float visibility = lights[light].spot.z >= 0.0 ? meshVisibilityTap(light, p, radius / 3.0) : 1.0;
@@ -118,7 +138,7 @@ vec3 splatSource(vec3 origin, vec3 dir, float tc, vec3 perp, float beta, float b
     int k = 0;
     do {
         int light = uFragmentLamps[k];
-        source += vAlbedo * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, beta, alpha, p);
+        source += vAlbedo * lights[light].radiance.rgb * lampSource(light, origin, dir, tc, lo, hi, tSurface, beta, alpha, p);
     } while (++k < MAX_FRAGMENT_LAMPS && uFragmentLamps[min(k, MAX_FRAGMENT_LAMPS - 1)] >= 0);
 #endif
     return mix(frame.fogColor.rgb, source, vFog);

@@ -24,4 +24,7 @@ flat SPLAT_VARYING float vPeakAlbedo;  // the albedo the sun's peak orders take 
 #endif
 #ifdef MEDIA_FRAGMENT_LAMPS
 flat SPLAT_VARYING vec3 vAlbedo;        // the lamps' light per fragment is scattered with it
+#ifdef SPLAT_LAMP_ORDER
+flat SPLAT_VARYING ivec2 vLayer;        // the particle's index and draw rank (lamp_neighbourhood.glsl)
+#endif
 #endif

@@ -17,6 +17,9 @@ void splatVertex(int rank, vec2 corner) {
 #endif
 #ifdef MEDIA_FRAGMENT_LAMPS
     vAlbedo = particle.albedoSigma.rgb;
+#ifdef SPLAT_LAMP_ORDER
+    vLayer = ivec2(index, rank);
+#endif
 #endif
     Billboard b = billboardOf(pr.xyz, pr.w);
 #ifdef SPLAT_CONSTANT

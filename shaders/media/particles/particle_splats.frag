@@ -18,6 +18,11 @@
 #ifdef MEDIA_FRAGMENT_LAMPS
 #include "media/common/slices.glsl"
 #include "media/common/spot_cone.glsl"
+#include "media/common/lamp_quadrature.glsl"
+#ifdef SPLAT_LAMP_ORDER
+#include "media/common/particle_data.glsl"
+#include "media/common/lamp_neighbourhood.glsl"
+#endif
 #endif
 #define SPLAT_VARYING in
 #include "media/common/splat_varyings.glsl"

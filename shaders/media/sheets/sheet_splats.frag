@@ -16,6 +16,7 @@
 #include "common/light_views.glsl"
 #include "media/common/slices.glsl"
 #include "media/common/spot_cone.glsl"
+#include "media/common/lamp_quadrature.glsl"
 #include "media/common/mesh_shadow.glsl"
 #endif
 #define SPLAT_VARYING in

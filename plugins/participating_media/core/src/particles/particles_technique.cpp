@@ -30,7 +30,7 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
       .help = "with per-particle lighting: shade per fragment while a point or spot light lies inside the medium (a "
               "particle with a central column over 0.1)",
       .type = SettingType::Boolean,
-      .defaultValue = "off (balanced: on)",
+      .defaultValue = "off",
       .actsWhen = "with lighting=particle or particle_exact",
       .showsWith = "a point or spot light inside the medium"},
      &setBoolean<&ParticlesSettings::exactNearLamps>, &perParticleLighting},
@@ -139,7 +139,10 @@ private:
                                        })));
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
                            {.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}, lamps, flags);
-        const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings};
+        // Balanced's lamps per fragment take the exact compositing order around them: a lamp inside a
+        // τ 3 cloud errs 8% with it and 45% without, and it costs campfire's fast frame 13 ms.
+        const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings,
+                                   .lampOrder = exact};
         if (!frame.settings->upsampleOnly && !constant) planEdges(context, frame, {variant, flags, lamps});
         frame.report("edge_pixels", static_cast<long long>(edges_ ? edges_->rect.z * edges_->rect.w : 0));
         return splatPass_->add(graph, context, *shared.buffer, *lightingPass_, variant, std::move(flags), lamps, shared.target);
@@ -174,7 +177,6 @@ ParticlesSettings ParticlesSettings::forTier(QualityTier tier) {
     if (tier == QualityTier::Fast) s.lighting = ParticleLighting::Particle;
     if (tier == QualityTier::Balanced) {
         s.lighting = ParticleLighting::ParticleExact;
-        s.exactNearLamps = true;
     }
     return s;
 }
