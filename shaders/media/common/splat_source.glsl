@@ -17,7 +17,7 @@
 // With SPLAT_LAMP_ORDER (particle splats, one particle a composited layer) each node's light also
 // takes the exact attenuation by the lamp's other listed neighbours (lamp_neighbourhood.glsl):
 // compositing order dims a neighbour's light by whole particles across the lamp's peak (a lamp in
-// a τ 3 cloud erred 48% without it).
+// a τ 3 cloud errs 42% without it, 8% with it).
 float nearLampSource(int light, vec3 origin, vec3 dir, float tc, vec2 lit, float lo, float tSurface, float beta, float alpha, bool near) {
     float radius = vCentreRadius.w;
     vec3 lamp = lights[light].position.xyz;
