@@ -117,10 +117,9 @@ def tiers_section(runs, bench_dir):
             "neighbour order). The library's default.",
             "- `balanced` (the default of `sandbox render` and `scripts/demo`): light evaluated once per particle at nine rays "
             "with the exact chord integrals and fitted across the billboard, the sun's phase function and nearby lamps per "
-            "fragment (a lamp's near field with the exact tier's quadrature and neighbour order); per fragment otherwise "
-            "one kernel-table fetch.",
-            "- `fast`: as balanced with cheaper light (one table fetch per ray), a lamp's near field without the neighbour "
-            "order, slices deposited in O(N) fill, automatic "
+            "fragment (a lamp's near field with the exact tier's quadrature and, around its peak, neighbour order); per "
+            "fragment otherwise one kernel-table fetch.",
+            "- `fast`: as balanced with cheaper light (one table fetch per ray), slices deposited in O(N) fill, automatic "
             "slice resolution, media at ¼ to ½ resolution where particles cover the image more than 2.5 times over, "
             "and cheaper mesh shadows.",
             "- `billboards`: not a tier but the yardstick of what a typical engine ships: sorted sprites lit once per "

@@ -3,6 +3,8 @@
 // opaque surface (and at the eye with MEDIA_EYE_INSIDE), from the pre-integrated kernel
 // table (the sheet-buffer splatting paper); the source from the lighting pass's fit
 // (common/splat_source.glsl). Output (α·J, α) blends premultiplied, exactly as particles.frag's does.
+// One particle a composited layer: the lamps' light takes the exact neighbour order (splat_source.glsl).
+#define SPLAT_LAMP_ORDER
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"

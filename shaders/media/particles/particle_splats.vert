@@ -1,6 +1,8 @@
 #version 450 core
 // Fast particles (media/particle_splat_pass.cpp): sorted billboards, back to front, carrying the
 // fit of their source the lighting pass computed (common/splat_vertex.glsl).
+// One particle a composited layer: the lamps' light takes the exact neighbour order (splat_source.glsl).
+#define SPLAT_LAMP_ORDER
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"

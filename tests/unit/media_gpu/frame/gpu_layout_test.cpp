@@ -136,9 +136,8 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(storageBinding(lighting.id(), "ParticleLight"), static_cast<GLint>(kParticleLightBinding));
     const gpu::Program splats = gpu::compileProgram(particleSplatDesc({.lamps = true}));
     EXPECT_EQ(samplerUnit(splats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));
-    const gpu::Program orderedSplats = gpu::compileProgram(particleSplatDesc({.lamps = true, .lampOrder = true}));
-    EXPECT_EQ(storageBinding(orderedSplats.id(), "LampNeighbourhoods"), static_cast<GLint>(kLampNeighbourhoodBinding));
-    EXPECT_EQ(storageBinding(orderedSplats.id(), "Particles"), static_cast<GLint>(kParticlesBinding));
+    EXPECT_EQ(storageBinding(splats.id(), "LampNeighbourhoods"), static_cast<GLint>(kLampNeighbourhoodBinding));
+    EXPECT_EQ(storageBinding(splats.id(), "Particles"), static_cast<GLint>(kParticlesBinding));
     const gpu::Program sheetSplats = gpu::compileProgram(sheetSplatDesc(true, false));
     EXPECT_EQ(samplerUnit(sheetSplats.id(), "uKernelTable"), static_cast<GLint>(kKernelTableUnit));
     EXPECT_EQ(samplerUnit(sheetSplats.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));

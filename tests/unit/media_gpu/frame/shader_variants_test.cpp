@@ -70,10 +70,8 @@ TEST_F(ShaderVariants, ParticleSplats) {
             for (bool constant : {false, true})
                 for (bool crossings : {false, true})
                     for (bool multiple : {false, true})
-                        for (bool lampOrder : {false, true})
-                            if (lamps || !lampOrder)  // the order acts only with lamps
-                                descs.push_back(particleSplatDesc({.eyeInside = eyeInside, .lamps = lamps, .constant = constant,
-                                                                   .meshCrossings = crossings, .multiple = multiple, .lampOrder = lampOrder}));
+                        descs.push_back(particleSplatDesc(
+                            {.eyeInside = eyeInside, .lamps = lamps, .constant = constant, .meshCrossings = crossings, .multiple = multiple}));
     expectCompiles(descs);
 }
 

@@ -22,7 +22,7 @@ ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 
 const gpu::Program& ParticleSplatPass::program(const SplatVariant& variant) {
     gpu::Program& p = programs_[(variant.eyeInside ? 1 : 0) + (variant.lamps ? 2 : 0) + (variant.constant ? 4 : 0) +
-                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0) + (variant.rankList ? 32 : 0) + (variant.lampOrder && variant.lamps ? 64 : 0)];
+                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0) + (variant.rankList ? 32 : 0)];
     if (!p) p = gpu::compileProgram(particleSplatDesc(variant));
     return p;
 }
@@ -35,7 +35,6 @@ gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant) {
     if (variant.meshCrossings && !variant.constant) desc.defines.push_back("MEDIA_MESH_CROSSINGS");
     if (variant.multiple) desc.defines.push_back("MEDIA_MULTIPLE");
     if (variant.rankList) desc.defines.push_back("SPLAT_RANK_LIST");
-    if (variant.lampOrder && variant.lamps) desc.defines.push_back("SPLAT_LAMP_ORDER");
     return desc;
 }
 
@@ -110,7 +109,7 @@ void ParticleSplatPass::draw(const gpu::PassResources& resources, const SplatInp
     s.context.blocks->bind();
     s.buffer.bindParticles();
     s.buffer.bindOrder();
-    if (variant.lampOrder) s.buffer.bindLampNeighbourhoods();
+    if (s.lamps.lamps[0] >= 0) s.buffer.bindLampNeighbourhoods();  // the lamps' neighbour order (splat_source.glsl)
     s.lighting.bind();
     glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
     glBindTextureUnit(kKernelTableUnit, kernelTable_.id());

@@ -20,7 +20,6 @@ struct SplatVariant {
     bool meshCrossings = false;  // the sun's mesh visibility per fragment where the lighting pass flags a crossing
     bool multiple = false;       // the multiple model: the sun's forward-peak orders (set by add from the frame)
     bool rankList = false;       // draws the ranks a list holds (set by draw when given one)
-    bool lampOrder = false;      // with lamps: their light takes the exact compositing order among the lamp's neighbours
 };
 // The splat program (particle_splats.*).
 gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant);
@@ -72,7 +71,7 @@ public:
 
 private:
     const gpu::Program& program(const SplatVariant& variant);
-    gpu::Program programs_[128];  // by eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple + 32·rankList + 64·lampOrder, built when first asked for
+    gpu::Program programs_[64];  // by eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple + 32·rankList, built when first asked for
     gpu::Buffer ranks_;          // draw's `ranks`, grown as needed
     std::size_t ranksCapacity_ = 0;
     gpu::Texture kernelTable_;

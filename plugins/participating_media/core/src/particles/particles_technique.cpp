@@ -139,10 +139,7 @@ private:
                                        })));
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
                            {.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}, lamps, flags);
-        // Balanced's lamps per fragment take the exact compositing order around them: a lamp inside a
-        // τ 3 cloud errs 8% with it and 45% without, and it costs campfire's fast frame 13 ms.
-        const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings,
-                                   .lampOrder = exact};
+        const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings};
         if (!frame.settings->upsampleOnly && !constant) planEdges(context, frame, {variant, flags, lamps});
         frame.report("edge_pixels", static_cast<long long>(edges_ ? edges_->rect.z * edges_->rect.w : 0));
         return splatPass_->add(graph, context, *shared.buffer, *lightingPass_, variant, std::move(flags), lamps, shared.target);

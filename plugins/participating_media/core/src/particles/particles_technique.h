@@ -20,8 +20,8 @@ enum class ParticleLighting : std::uint8_t {
 struct ParticlesSettings {
     ParticleLighting lighting = ParticleLighting::Fragment;
     // With per-particle lighting: shade a frame per fragment after all where a lamp lies inside the
-    // medium (lampInsideMedium). Off in every tier: balanced's splats take a lamp's near field with
-    // the exact tier's quadrature and neighbour order; fast's without the order (docs/design-notes.md).
+    // medium (lampInsideMedium). Off in every tier: the splats take a lamp's near field with the
+    // exact tier's quadrature and neighbour order (docs/design-notes.md).
     bool exactNearLamps = false;
     bool softParticles = true;  // clip each particle's kernel at the opaque surface (off: billboard plane test)
     // Integrate the light's transmittance over each particle's layer (off: take it at one point:
