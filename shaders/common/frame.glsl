@@ -26,8 +26,8 @@ float linearViewDepth(float d) {
 }
 
 // The camera ray at a point of normalised device coordinates, relative to the frame origin, its
-// direction not normalised: both are linear in the NDC, so a vertex stage may hand them to its
-// fragments noperspective.
+// direction not normalised (both linear in the NDC; but llvmpipe's clipping breaks noperspective
+// interpolation, so splats hand over a point on their quad instead: splat_vertex.glsl).
 void cameraRayAtNdc(vec2 ndc, out vec3 origin, out vec3 direction) {
     vec3 right = frame.cameraRight.xyz * (ndc.x * frame.cameraRight.w), up = frame.cameraUp.xyz * (ndc.y * frame.cameraUp.w);
     bool orthographic = frameOrthographic();

@@ -5,7 +5,7 @@
 #define MEDIA_SLICE_VIEWS_BINDING 3  // uniform block MediaSliceViews
 #endif
 #ifndef MEDIA_SLICES_UNIT
-#define MEDIA_SLICES_UNIT 2          // sampler2DArray of the light slices, one plane to a layer
+#define MEDIA_SLICES_UNIT 2          // sampler2DArray of the light slices, two planes to a layer beside their predecessors
 #endif
 #define MEDIA_SCENE_DEPTH_UNIT 3     // the host's scene depth (reversed Z)
 #define MEDIA_SHADOW_DEPTH_UNIT 4    // the host's mesh shadow map, read as raw depth

@@ -77,6 +77,19 @@ float lampNeighbourLogFactor(LampNeighbour q, float t) {
     return q.drawnAfter ? q.sigma * chordIntegral(q.c, q.radius, split, q.u1) : -q.sigma * chordIntegral(q.c, q.radius, q.u0, split);
 }
 
+// lampNeighbourLogFactor added at the quadrature's nodes around the lamp's peak (the splats'), in
+// erfs: the interval's ends' taken once, one erf a node, without chordIntegral's short-interval
+// quadrature (what it refines is far below what the factor needs).
+void addPeakLogFactors(LampNeighbour q, float t[LAMP_NEAR_NODES], inout float sum[LAMP_NEAR_NODES]) {
+    float sk = sqrt(KERNEL_FALLOFF) / q.radius;
+    float scale = q.sigma * exp(-sk * sk * q.c.b2) * HALF_SQRT_PI / sk;
+    float e0 = erfApprox(sk * q.u0), e1 = erfApprox(sk * q.u1);
+    for (int j = 0; j < LAMP_NEAR_NODES; ++j) {
+        float e = erfApprox(sk * clamp(t[j] - q.c.tClosest, q.u0, q.u1));
+        sum[j] += scale * (q.drawnAfter ? e1 - e : e0 - e);
+    }
+}
+
 // The summed log factor at x, weighted where the list is complete and capped.
 float lampLogFactorAt(LampList list, int light, vec3 x, float sum) {
     return min(sum * lampListWeight(list, light, x), MAX_LAMP_LOG_FACTOR);

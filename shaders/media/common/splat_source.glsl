@@ -33,15 +33,7 @@ void peakOrder(int light, vec3 origin, vec3 dir, LampNodes q, float tSurface, bo
     LayerOrder layer = LayerOrder(vLayer.x, vLayer.y, tSurface, 1e30);
     for (uint n = 0u; n < (near ? list.count : 0u); ++n) {
         LampNeighbour neighbour = lampNeighbour(list, n, origin, dir, layer);
-        if (!neighbour.valid) continue;
-        // σ∫ρ over [split, u1] (drawn after this layer) or −σ∫ρ over [u0, split] (before), as erfs.
-        float sk = sqrt(KERNEL_FALLOFF) / neighbour.radius;
-        float scale = neighbour.sigma * exp(-sk * sk * neighbour.c.b2) * HALF_SQRT_PI / sk;
-        float e0 = erfApprox(sk * neighbour.u0), e1 = erfApprox(sk * neighbour.u1);
-        for (int j = 0; j < LAMP_NEAR_NODES; ++j) {
-            float e = erfApprox(sk * clamp(t[j] - neighbour.c.tClosest, neighbour.u0, neighbour.u1));
-            order[j] += scale * (neighbour.drawnAfter ? e1 - e : e0 - e);
-        }
+        if (neighbour.valid) addPeakLogFactors(neighbour, t, order);
     }
     for (int j = 0; j < LAMP_NEAR_NODES; ++j) order[j] = lampLogFactorAt(list, light, origin + dir * t[j], order[j]);
 }

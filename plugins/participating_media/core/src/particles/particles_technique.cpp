@@ -172,9 +172,7 @@ private:
 ParticlesSettings ParticlesSettings::forTier(QualityTier tier) {
     ParticlesSettings s;
     if (tier == QualityTier::Fast) s.lighting = ParticleLighting::Particle;
-    if (tier == QualityTier::Balanced) {
-        s.lighting = ParticleLighting::ParticleExact;
-    }
+    if (tier == QualityTier::Balanced) s.lighting = ParticleLighting::ParticleExact;
     return s;
 }
 

@@ -14,18 +14,6 @@ constexpr int kLayersPerDraw = 8;                    // light_slice_pairs.frag o
 constexpr int kPlanesPerDraw = 2 * kLayersPerDraw;
 constexpr GLint kFirstLayerLocation = 0;             // uFirstLayer
 constexpr GLint kFirstPlaneLocation = 1;             // uFirstPlane
-
-// Attaches `count` layers of `texture` from `first` as draw buffers 0.. and binds the framebuffer.
-void bindPairLayers(GLuint framebuffer, GLuint texture, int first, int count) {
-    GLenum drawBuffers[kLayersPerDraw];
-    for (int a = 0; a < kLayersPerDraw; ++a) {
-        const auto attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a);
-        if (a < count) glNamedFramebufferTextureLayer(framebuffer, attachment, texture, 0, first + a);
-        else glNamedFramebufferTexture(framebuffer, attachment, 0, 0);
-        drawBuffers[a] = a < count ? attachment : GL_NONE;
-    }
-    glNamedFramebufferDrawBuffers(framebuffer, kLayersPerDraw, drawBuffers);
-}
 }  // namespace
 
 LightSlicePairsPass::LightSlicePairsPass() : pass_("media/slices/light_slice_pairs.frag") {}
@@ -49,10 +37,11 @@ gpu::ResourceHandle LightSlicePairsPass::add(gpu::FrameGraph& graph, const std::
             for (const SliceView& v : views)
                 for (int plane = 0; plane < v.slices; plane += kPlanesPerDraw) {
                     const int count = (std::min(kPlanesPerDraw, v.slices - plane) + 1) / 2;
-                    bindPairLayers(fbo.id(), resources.id(d.pairs), 2 * v.firstLayer + plane / 2, count);
+                    attachSliceLayers(fbo.id(), resources.id(d.pairs), 2 * v.firstLayer + plane / 2, count);
                     glProgramUniform1i(pass_.program(), kFirstLayerLocation, v.firstLayer + plane / 4);
                     glProgramUniform1i(pass_.program(), kFirstPlaneLocation, plane);
                     pass_.draw(fbo.id(), glm::ivec2(resolution));
+                    detachSliceLayers(fbo.id(), count);
                 }
         });
     return data.pairs;

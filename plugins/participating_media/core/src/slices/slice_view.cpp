@@ -6,24 +6,29 @@
 
 namespace nimbus::media {
 
-void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view, bool clear) {
-    const int attachments = std::min((view.slices + 3) / 4, 8);
+void attachSliceLayers(GLuint framebuffer, GLuint texture, int firstLayer, int count) {
     GLenum drawBuffers[8] = {GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE, GL_NONE};
-    for (int a = 0; a < attachments; ++a) {
-        glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), texture, 0, view.firstLayer + a);
+    for (int a = 0; a < count; ++a) {
+        glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), texture, 0, firstLayer + a);
         drawBuffers[a] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a);
     }
-    glNamedFramebufferDrawBuffers(framebuffer, attachments, drawBuffers);
+    glNamedFramebufferDrawBuffers(framebuffer, count, drawBuffers);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+}
+
+void detachSliceLayers(GLuint framebuffer, int count) {
+    for (int a = 0; a < count; ++a) glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), 0, 0);
+}
+
+void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view, bool clear) {
+    const int attachments = std::min((view.slices + 3) / 4, 8);
+    attachSliceLayers(framebuffer, texture, view.firstLayer, attachments);
     const float zero[4] = {0, 0, 0, 0};
     if (clear)
         for (int a = 0; a < attachments; ++a) glClearNamedFramebufferfv(framebuffer, GL_COLOR, a, zero);
 }
 
-void unbindSliceLayers(GLuint framebuffer, const SliceView& view) {
-    for (int a = 0; a < (view.slices + 3) / 4; ++a)
-        glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(a), 0, 0);
-}
+void unbindSliceLayers(GLuint framebuffer, const SliceView& view) { detachSliceLayers(framebuffer, (view.slices + 3) / 4); }
 
 void setSliceViewUniforms(GLuint program, const SliceView& v, int resolution) {
     const glm::vec4 params(v.view.perspective ? 1.0f : 0.0f, v.view.depthNear, v.view.depthFar, static_cast<float>(v.slices));

@@ -6,6 +6,10 @@
 
 namespace nimbus::media {
 
+// Attaches `count` (at most 8) layers of `texture` from `firstLayer` as draw buffers 0.. of
+// `framebuffer` and binds it; detachSliceLayers detaches them again.
+void attachSliceLayers(GLuint framebuffer, GLuint texture, int firstLayer, int count);
+void detachSliceLayers(GLuint framebuffer, int count);
 // Attaches the ceil(slices/4) layers of `view` in `texture` as draw buffers 0.. of `framebuffer`,
 // clears them to zero unless a pass adds to what an earlier one drew (`clear` false), and binds
 // the framebuffer (every slice pass renders a view this way).
