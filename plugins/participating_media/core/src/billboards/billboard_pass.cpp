@@ -21,15 +21,14 @@ gpu::ResourceHandle BillboardPass::add(gpu::FrameGraph& graph, GraphFrame& conte
     struct Data {
         gpu::ResourceHandle media, depth;
     };
-    const int w = target.size.x, h = target.size.y;
     const auto& data = graph.addPass<Data>(
         "media_billboards",
         [&](gpu::PassBuilder& builder, Data& d) {
-            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.media = declareMediaTarget(builder, target);
             d.depth = builder.read(context.sceneDepth);
         },
-        [this, &context, &buffer, w, h, scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
-            const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
+        [this, &context, &buffer, target, scale = target.fullResScale](const gpu::PassResources& resources, const Data& d) {
+            const gpu::Framebuffer fbo = bindMediaTarget(resources.id(d.media), target);
             glUseProgram(program_.id());
             context.blocks->bind();
             buffer.bindParticles();
@@ -37,7 +36,7 @@ gpu::ResourceHandle BillboardPass::add(gpu::FrameGraph& graph, GraphFrame& conte
             glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             glProgramUniform2f(program_.id(), 1, scale.x, scale.y);
-            gpu::applyPipeline(kMediaOver);
+            gpu::applyPipeline(mediaOver(target));
             glBindVertexArray(vertexArray_.id());
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
         });

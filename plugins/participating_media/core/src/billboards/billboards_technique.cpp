@@ -28,6 +28,7 @@ TechniqueEntry billboardsTechnique() {
             .help = "the game-industry yardstick: flat, sorted sprites lit per particle, with no volumetric or mesh shadows",
             .lightSlices = false,
             .multipleScattering = false,
+            .drawsOver = true,
             .read = [](const Settings&, QualityTier) -> std::any { return {}; },
             .create = [] { return std::make_unique<BillboardsTechnique>(); },
             .benchRows = [](const ParticleSet&, const std::vector<glm::dvec3>&) {

@@ -65,6 +65,7 @@ void MediaRenderer::prepare(const ParticleSet& particles, const MediaRenderSetti
     settings_ = withDefaults(settings);
     settings_.mode = entry.name;
     technique_ = &technique(entry);
+    drawsOver_ = entry.drawsOver;
     shared_->bounds = particleBounds(particles);
     shared_->bounds.extend(volumeBounds(*volumes_));
     stats_ = {};
@@ -230,8 +231,11 @@ void MediaRenderer::addMedia(gpu::FrameGraph& graph, GraphFrame& context) {
     context.edgeRect = glm::ivec4(0);
     if (particles_ == nullptr || !hasMedium(*particles_, volumes_) || context.blocks == nullptr) return;
     const gpu::View& v = context.host.camera;
-    const MediaTarget& target = shared_->target;
+    MediaTarget& target = shared_->target;
+    const bool full = target.size == glm::ivec2(v.width, v.height);
+    target.over = full && drawsOver_ ? context.output : gpu::ResourceHandle{};
     context.color = technique_->addMedia(graph, context, frame_);
+    if (target.over.valid() && context.color == target.over) context.color = {};  // drawn over the output: no layer
     context.edgeThreshold = 0.2f;
     if (target.size != glm::ivec2(v.width, v.height)) {
         if (!depthUsedPass_) depthUsedPass_ = std::make_unique<MediaDepthUsedPass>();

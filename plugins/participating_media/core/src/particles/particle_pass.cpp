@@ -22,7 +22,6 @@ gpu::ProgramDesc particlesDesc(bool layerLight) {
 gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& context,
                                          const ParticleGpuBuffer& buffer, ParticleShading shading, const MediaTarget& target) {
     struct Data : LitMediaInputs {};
-    const int w = target.size.x, h = target.size.y;
     if (!shading.layerLight && !pointLight_)
         pointLight_ = std::make_unique<LocalLightPrograms>(particlesDesc(false));
     const gpu::Program& program = (shading.layerLight ? layerLight_ : *pointLight_).forLights(context.host.lights, context.multiple);
@@ -31,9 +30,9 @@ gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& contex
         [&](gpu::PassBuilder& builder, Data& d) {
             declareLitMediaInputs(builder, context, target, d);
         },
-        [this, &program, &context, &buffer, shading, w, h, scale = target.fullResScale](const gpu::PassResources& resources,
-                                                                                  const Data& d) {
-            const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
+        [this, &program, &context, &buffer, shading, target, scale = target.fullResScale](const gpu::PassResources& resources,
+                                                                                         const Data& d) {
+            const gpu::Framebuffer fbo = bindMediaTarget(resources.id(d.media), target);
 
             glUseProgram(program.id());
             context.blocks->bind();
@@ -43,7 +42,7 @@ gpu::ResourceHandle ParticlePass::add(gpu::FrameGraph& graph, GraphFrame& contex
             bindLitMediaInputs(resources, d);
             glProgramUniform1i(program.id(), 0, shading.softParticles ? 1 : 0);
             glProgramUniform2f(program.id(), 1, scale.x, scale.y);
-            gpu::applyPipeline(kMediaOver);
+            gpu::applyPipeline(mediaOver(target));
             glBindVertexArray(vertexArray_.id());
             glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
         });

@@ -64,18 +64,17 @@ std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const s
 gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
                                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                               const FragmentLamps& lamps, const MediaTarget& target) {
-    const int w = target.size.x, h = target.size.y;
     const auto& data = graph.addPass<SplatInputs>(
         "media_particle_splats",
         [&](gpu::PassBuilder& builder, SplatInputs& d) {
-            d.media = builder.create(target.name, {GL_TEXTURE_2D, GL_RGBA32F, w, h, 1, 1});
+            d.media = declareMediaTarget(builder, target);
             declareInputs(builder, context, variant, lamps, d);
         },
-        [this, variant, flags = std::move(flags), &context, &buffer, &lighting, lamps, w, h,
-         scale = target.fullResScale](const gpu::PassResources& resources, const SplatInputs& d) {
-            const gpu::Framebuffer fbo = bindClearedMediaTarget(resources.id(d.media), {w, h});
+        [this, variant, flags = std::move(flags), &context, &buffer, &lighting, lamps, target](const gpu::PassResources& resources,
+                                                                                              const SplatInputs& d) {
+            const gpu::Framebuffer fbo = bindMediaTarget(resources.id(d.media), target);
             draw(resources, d, {.context = context, .buffer = buffer, .lighting = lighting, .variant = variant, .flags = flags, .lamps = lamps},
-                 scale, kMediaOver);
+                 target.fullResScale, mediaOver(target));
         });
     return data.media;
 }

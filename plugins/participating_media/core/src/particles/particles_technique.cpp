@@ -181,6 +181,7 @@ TechniqueEntry particlesTechnique() {
             .help = "sorted soft billboards, each a closed-form slab of its kernel lit through the light slices",
             .sliceDeposit = true,
             .edges = true,
+            .drawsOver = true,
             .settings = specsOf(kParticlesFields),
             .read = readerOf(kParticlesFields),
             .idle =

@@ -19,10 +19,13 @@ struct GraphFrame {
     HostFrame host;                  // sceneDepth and shadows->texture are not read: the handles below are
     gpu::ResourceHandle sceneDepth;  // the opaque scene's depth in the graph (needed by addMedia)
     gpu::ResourceHandle shadowMap;   // the mesh shadow map array in the graph; invalid: none
+    // The host's linear output holding the opaque image, where the host lets a full-resolution
+    // medium blend straight over it (alpha kept) rather than hand back a layer; invalid: a layer.
+    gpu::ResourceHandle output;
 
     // Filled by the plugin.
     gpu::ResourceHandle slices;          // addLightSlices: the light slices; invalid: none this frame
-    gpu::ResourceHandle color;           // addMedia: MediaLayer::color
+    gpu::ResourceHandle color;           // addMedia: MediaLayer::color (invalid: none, or drawn over `output`)
     gpu::ResourceHandle depthUsed;       // addMedia: MediaLayer::depthUsed (invalid at full resolution)
     gpu::ResourceHandle edges;           // addMedia: MediaLayer::edges (invalid: none)
     glm::ivec4 edgeRect{0};              // addMedia: MediaLayer::edgeRect

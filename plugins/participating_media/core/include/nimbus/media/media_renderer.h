@@ -97,6 +97,7 @@ private:
     TechniqueTable techniques_;
     std::map<std::string, std::unique_ptr<MediaTechnique>> made_;
     MediaTechnique* technique_ = nullptr;  // this frame's
+    bool drawsOver_ = false;               // its entry's drawsOver
     const ParticleSet* particles_ = nullptr;
     const std::vector<Volume>* volumes_ = nullptr;
     std::vector<Volume> noVolumes_;

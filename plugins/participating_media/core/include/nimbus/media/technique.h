@@ -90,6 +90,7 @@ struct TechniqueEntry {
     bool multipleScattering = true;  // draws the multiple-scattering model (the scattering keys act in it)
     bool volumes = false;            // draws volumes (volume.h); the other modes refuse a scene with one
     bool edges = false;              // may draw a reduced image's edges again (addEdges): mixed_resolution acts in it
+    bool drawsOver = false;          // its full-resolution passes honour MediaTarget::over (blend over the host's output)
     std::vector<SettingSpec> settings;  // its own keys (the table sets their `modes` to this name)
     // Its typed settings for `tier` with every one of its keys that was set applied.
     std::function<std::any(const Settings&, QualityTier)> read;
