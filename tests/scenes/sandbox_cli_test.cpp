@@ -301,6 +301,28 @@ TEST(SandboxRender, BalancedKeepsItsSplatsAroundALampInsideTheMedium) {
     }
 }
 
+// At full resolution the splats of particles no mesh box comes near are clipped by the depth test
+// alone; a reduced layer has no depth of its size, so every splat fetches it.
+TEST(SandboxRender, FullResolutionSplatsClearOfMeshesTakeTheDepthTest) {
+    TempFolder out;
+    for (const char* scale : {"1", "0.5"}) {
+        const fs::path json = out / "stats.json";
+        const ProcessResult r = sandbox({"render", (kContent / "scenes/smoke.gltf").string(), "--time", "8", "--size", "96x54", "--quality",
+                                         "fast", "--set", std::string("media_scale=") + scale, "--stats", json.string(), "--out",
+                                         (out / "d.png").string()});
+        ASSERT_EQ(r.exitCode, 0) << explain(r);
+        std::ifstream in(json);
+        const nlohmann::json stats = nlohmann::json::parse(in);
+        const long long tested = stats.at("media_depth_tested_particles").get<long long>();
+        if (std::string(scale) == "1") {
+            EXPECT_GT(tested, 0);
+            EXPECT_LT(tested, stats.at("media_particles").get<long long>()) << "the particles on the ground fetch the depth";
+        } else {
+            EXPECT_EQ(tested, 0);
+        }
+    }
+}
+
 TEST(SandboxSettings, ListsEverySettingWithWhereItActs) {
     const ProcessResult r = sandbox({"settings"});
     ASSERT_EQ(r.exitCode, 0) << explain(r);

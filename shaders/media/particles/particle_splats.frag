@@ -3,6 +3,7 @@
 // opaque surface (and at the eye with MEDIA_EYE_INSIDE), from the pre-integrated kernel
 // table (the sheet-buffer splatting paper); the source from the lighting pass's fit
 // (common/splat_source.glsl). Output (α·J, α) blends premultiplied, exactly as particles.frag's does.
+// SPLAT_DEPTH_TESTED: a particle clear of meshes, which the depth test alone clips (particle_splat_pass.cpp).
 // One particle a composited layer: the lamps' light takes the exact neighbour order (splat_source.glsl).
 #define SPLAT_LAMP_ORDER
 #include "media/bindings.glsl"
@@ -31,7 +32,9 @@
 #include "media/common/splat_ray.glsl"
 #include "media/common/splat_source.glsl"
 
+#ifndef SPLAT_DEPTH_TESTED
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
+#endif
 layout(location = 1) uniform vec2 uFullResScale;
 layout(location = 13) uniform vec2 uFragOffset;  // the target's first pixel in the viewport (0 but for a rect of edges)
 
@@ -41,11 +44,20 @@ void main() {
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale + uFragOffset;
     SplatRay r = splatRay();
     float radius = vCentreRadius.w, invRadius = 1.0 / radius;
+#ifdef SPLAT_DEPTH_TESTED
+    // No surface comes within the quad's reach of the centre, so the depth test clipped it whole.
+    float tSurface = 1e30;
+#else
     float depth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
     float tSurface = depth * r.perDepth;
+#endif
+#ifdef SPLAT_DEPTH_TESTED
+    float segment = kernelColumn(r.beta);
+#else
     float segment = kernelSegment(r.beta, (tSurface - r.tc) * invRadius);
-#ifdef MEDIA_EYE_INSIDE
-    segment -= kernelSegment(r.beta, -r.tc * invRadius);
+#endif
+#if defined(MEDIA_EYE_INSIDE) && !defined(SPLAT_DEPTH_TESTED)
+    segment -= kernelSegment(r.beta, -r.tc * invRadius);  // the eye lies in no depth-tested sphere
 #endif
     float alpha = oneMinusExpNeg(vSigma * radius * max(segment, 0.0));
     vec3 source = splatSource(r.origin, r.dir, r.tc, r.perp, r.beta, r.beta2, tSurface, alpha);

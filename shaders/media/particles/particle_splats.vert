@@ -33,4 +33,10 @@ void main() {
     int rank = uFirstRank + gl_InstanceID;
 #endif
     splatVertex(rank, kCorners[gl_VertexID]);
+#ifndef SPLAT_DEPTH_TESTED
+    // Where the pass tests depth, a particle that fetches it takes its sphere's nearest depth (the
+    // near plane's where that lies closer): the test then drops only what a surface hides whole.
+    vec4 nearest = frame.viewProjection * vec4(vCentreRadius.xyz - frame.cameraForward.xyz * vCentreRadius.w, 1.0);
+    gl_Position.z = (nearest.w > 0.0 ? min(nearest.z / nearest.w, 1.0) : 1.0) * gl_Position.w;
+#endif
 }

@@ -20,6 +20,7 @@ HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows
     shadows.views = context.shadowViews;
     frame.shadows = &shadows;
     if (occluders && context.input.gpuScene != nullptr) {
+        frame.occludersComplete = true;  // every instance's box
         for (const render::MeshInstance& instance : context.input.instances) {
             const auto& [lo, hi] = context.input.gpuScene->localBounds(instance.mesh);
             if (lo.x > hi.x) continue;  // a mesh without triangles

@@ -104,7 +104,10 @@ void makeHostFrame(MediaState& state, const FrameInput& frame, const MeshRendere
     state.shadows = {meshes.shadowMap(), kShadowMapSize, kPcfRadius, frame.shadowViews};
     host.shadows = &state.shadows;
     host.depthConvention = frame.standardDepth ? media::DepthConvention::Standard : media::DepthConvention::ReversedZ;
-    if (state.renderer->readsOccluders()) host.occluders = occluderBoxes(frame, scene);
+    if (state.renderer->readsOccluders()) {
+        host.occluders = occluderBoxes(frame, scene);
+        host.occludersComplete = true;  // every mesh's box
+    }
 }
 
 void installHooks(ecs::World& world) {

@@ -1,5 +1,7 @@
 // kernel_table.cpp: the closed form of a particle's optical depth up to a point of a ray against an
-// independent quadrature, its limits, and the table the fast splats read bilinearly.
+// independent quadrature, its limits, and the table the fast splats read bilinearly; and the GLSL
+// closed form of a whole chord's column (kernel_table.glsl kernelColumn, run by
+// shaders/kernel_column_probe.comp) against the C++.
 #include "common/kernel_table.h"
 
 #include <gtest/gtest.h>
@@ -7,7 +9,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu/gl_test_context.h"
 #include "media_core/numeric_quadrature.h"
+#include "nimbus/gpu/gl_objects.h"
+#include "nimbus/gpu/shader_program.h"
 
 namespace nimbus::media {
 namespace {
@@ -67,6 +72,33 @@ TEST(KernelTable, BilinearFetchIsWithinTwoTenthsOfAPercent) {
         }
     EXPECT_LT(worst, 2e-3);
     std::printf("[kernel table] %dx%d: worst bilinear error at cell centres %.2e of the peak column\n", nb, nm, worst);
+}
+
+class KernelColumnGlsl : public gpu::test::GlTest {};
+
+TEST_F(KernelColumnGlsl, MatchesTheWholeChordsSegmentWithinAMillionthOfThePeak) {
+    std::vector<float> betas;
+    for (int i = 0; i <= 1000; ++i) betas.push_back(static_cast<float>(i) / 1000.0f);
+    betas.push_back(1.5f);  // past the sphere: no column
+    const gpu::Program program =
+        gpu::compileProgram({.compute = "kernel_column_probe.comp", .folder = std::filesystem::path(NIMBUS_MEDIA_GPU_TEST_SHADERS)});
+    const gpu::Buffer input = gpu::createBuffer(betas.size() * sizeof(float), betas.data(), 0);
+    const gpu::Buffer output = gpu::createBuffer(betas.size() * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+    glUseProgram(program.id());
+    glProgramUniform1ui(program.id(), 0, static_cast<GLuint>(betas.size()));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
+    glDispatchCompute(static_cast<GLuint>((betas.size() + 63) / 64), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<float> values(betas.size());
+    glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(values.size() * sizeof(float)), values.data());
+    const double peak = kernelSegment(0.0, 1.0);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < betas.size(); ++i)
+        worst = std::max(worst, std::abs(static_cast<double>(values[i]) - kernelSegment(betas[i], 1.0)) / peak);
+    EXPECT_LT(worst, 1e-6);
+    EXPECT_EQ(values.back(), 0.0f);
+    std::printf("[kernel column] worst GLSL error %.2e of the peak column\n", worst);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // frame/media_settings.cpp's defaults, and common/medium_footprint.cpp: splatFootprint and automaticMediaScale,
 // what media_scale=auto is chosen from, particlesNearMeshes, which particles balanced draws with the
 // mesh-crossing variant, particlesNearLamps, which the splats draw with the fragment lamps, and the
-// rects the fast tier draws its edges again within (billboardRect, nearMeshRect, intersectRects).
+// rects the fast tier draws its edges again within (billboardRect, nearMeshRect, intersectRects),
+// and particlesClearOfMeshes, which splats the depth test alone clips.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,6 +71,37 @@ TEST(ParticlesNearMeshes, ATiltedThinBoxReachesOnlyTheSpheresWithinReach) {
     particles.push({0.5, 0.5, 1.0}, 0.2f, 1.0f, Medium{});  // on the plate's plane
     EXPECT_EQ(particlesNearMeshes({plate}, particles, 1.0), (std::vector<std::uint8_t>{0, 1}));
     EXPECT_EQ(particlesNearMeshes({}, particles, 1.0), (std::vector<std::uint8_t>{0, 0}));
+}
+
+// A unit cube whose nearest face lies `gap` metres right of `p` (along +x).
+OccluderBox cubeRightOf(const glm::dvec3& p, double gap) {
+    OccluderBox box;
+    box.centre = p + glm::dvec3(gap + 0.5, 0.0, 0.0);
+    box.half = glm::dvec3(0.5);
+    return box;
+}
+
+TEST(ParticlesClearOfMeshes, AMeshWithinTheQuadsReachNotOnlyTheSpheres) {
+    // 2 m ahead with R = 1: the quad through the centre spans R·d/√(d² − R²) = 1.155 m of it.
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -2.0}, 1.0f, 1.0f, Medium{});
+    const gpu::View view = testView();
+    EXPECT_EQ(particlesClearOfMeshes({}, particles, view), std::vector<std::uint8_t>{1}) << "no mesh at all";
+    EXPECT_EQ(particlesClearOfMeshes({cubeRightOf({0.0, 0.0, -2.0}, 1.3)}, particles, view), std::vector<std::uint8_t>{1});
+    EXPECT_EQ(particlesClearOfMeshes({cubeRightOf({0.0, 0.0, -2.0}, 1.1)}, particles, view), std::vector<std::uint8_t>{0})
+        << "outside the sphere, but a ray through it meets the quad's plane beyond the mesh";
+    gpu::View ortho = view;
+    ortho.orthographic = true;
+    EXPECT_EQ(particlesClearOfMeshes({cubeRightOf({0.0, 0.0, -2.0}, 1.1)}, particles, ortho), std::vector<std::uint8_t>{1})
+        << "an orthographic quad reaches R";
+}
+
+TEST(ParticlesClearOfMeshes, NotWhereTheQuadCoversTheScreen) {
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -0.5}, 1.0f, 1.0f, Medium{});   // around the eye
+    particles.push({0.0, 0.0, -1.05}, 1.0f, 1.0f, Medium{});  // its front within twice the near plane
+    particles.push({0.0, 0.0, -3.0}, 1.0f, 1.0f, Medium{});
+    EXPECT_EQ(particlesClearOfMeshes({}, particles, testView()), (std::vector<std::uint8_t>{0, 0, 1}));
 }
 
 TEST(BillboardRect, BoundsTheFlaggedSpheresOnScreen) {

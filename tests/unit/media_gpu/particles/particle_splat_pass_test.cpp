@@ -1,5 +1,5 @@
 // particles/particle_splat_pass.cpp: splatRuns, the runs of the draw order the splats draw with and
-// without the mesh-crossing variant and the fragment lamps.
+// without the mesh-crossing variant, the fragment lamps and the depth fetch.
 #include <gtest/gtest.h>
 
 #include "particles/particle_splat_pass.h"
@@ -69,6 +69,23 @@ TEST(SplatRuns, TheLampBitSplitsRunsAndNeverJoins) {
     EXPECT_TRUE(joined[0].lamps);
     const auto apart = splatRuns(identity(3), {both, 0, both}, 8);
     EXPECT_EQ(apart.size(), 3u) << "a gap without the lamps stays apart";
+}
+
+TEST(SplatRuns, AShortRunClearOfMeshesJoinsTheFetchingNeighboursButNeverTheOtherWay) {
+    constexpr std::uint8_t clear = kSplatClearOfMeshes;
+    // The depth fetch clips any particle, so a short clear gap is drawn with it.
+    const auto joined = splatRuns(identity(3), {0, clear, 0}, 8);
+    ASSERT_EQ(joined.size(), 1u);
+    EXPECT_FALSE(joined[0].depthTested);
+    // A particle near a mesh needs its fetch.
+    const auto apart = splatRuns(identity(3), {clear, 0, clear}, 8);
+    ASSERT_EQ(apart.size(), 3u);
+    EXPECT_TRUE(apart[0].depthTested);
+    EXPECT_FALSE(apart[1].depthTested);
+    // Masked out (no depth test in the pass), every run fetches.
+    const auto masked = splatRuns(identity(3), {clear, 0, clear}, 8, static_cast<std::uint8_t>(~clear));
+    ASSERT_EQ(masked.size(), 1u);
+    EXPECT_FALSE(masked[0].depthTested);
 }
 
 }  // namespace

@@ -240,6 +240,26 @@ std::vector<std::uint8_t> particlesNearLamps(const ParticleSet& particles, const
     return near;
 }
 
+std::vector<std::uint8_t> particlesClearOfMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, const gpu::View& view) {
+    // The margins keep the GPU's float tests (billboard.glsl: d ≤ 1.001 R, depth − R ≤ 2 near) on this side.
+    constexpr double kMargin = 1.01;
+    std::vector<std::uint8_t> clear(particles.size(), 0);
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const glm::dvec3 c = particles.position[i] - view.origin;
+        const double r = particles.radius[i], d = glm::length(c), depth = glm::dot(c, view.forward);
+        double reach = r;  // an orthographic quad: screen-aligned, half size R
+        if (!view.orthographic) {
+            if (d <= kMargin * r || depth - r <= kMargin * 2.0 * view.znear) continue;
+            reach = r * d / std::sqrt(d * d - r * r);
+        }
+        reach *= kMargin;
+        clear[i] = std::none_of(meshes.begin(), meshes.end(), [&](const OccluderBox& box) {
+            return squaredDistance(box, particles.position[i]) < reach * reach;
+        }) ? 1 : 0;
+    }
+    return clear;
+}
+
 bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view) {
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const glm::dvec3 d = particles.position[i] - view.origin;

@@ -16,13 +16,36 @@ constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFrag
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
 constexpr GLint kFirstRankLocation = 12;     // particle_splats.vert uFirstRank
 constexpr GLint kFragOffsetLocation = 13;    // particle_splats.frag uFragOffset
+
+bool sameVariant(const SplatRun& a, const SplatRun& b) {
+    return a.meshCrossings == b.meshCrossings && a.lamps == b.lamps && a.depthTested == b.depthTested;
 }
+
+// Whether run a's variant draws b's particles as theirs would: the lamp bit never changes, the
+// crossing variant takes a particle no mesh crosses, and the depth fetch takes any particle.
+bool covers(const SplatRun& a, const SplatRun& b) {
+    return a.lamps == b.lamps && (a.meshCrossings || !b.meshCrossings) && (!a.depthTested || b.depthTested);
+}
+
+// The scene depth as the target's depth attachment, read-only: where the host's depth is a depth
+// texture of the target's size.
+bool canDepthTest(const gpu::TextureDesc& depth, const MediaTarget& target) {
+    return gpu::isDepthFormat(depth.format) && glm::ivec2(depth.width, depth.height) == target.size;
+}
+
+// The splats' state with the depth test: a splat's fragment only where its quad's depth lies in
+// front of the scene's (reversed Z), writing none.
+gpu::PipelineState depthTested(gpu::PipelineState state) {
+    state.depth = {.test = true, .compare = GL_GEQUAL, .write = false};
+    return state;
+}
+}  // namespace
 
 ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 
 const gpu::Program& ParticleSplatPass::program(const SplatVariant& variant) {
     gpu::Program& p = programs_[(variant.eyeInside ? 1 : 0) + (variant.lamps ? 2 : 0) + (variant.constant ? 4 : 0) +
-                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0) + (variant.rankList ? 32 : 0)];
+                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0) + (variant.rankList ? 32 : 0) + (variant.depthTested ? 64 : 0)];
     if (!p) p = gpu::compileProgram(particleSplatDesc(variant));
     return p;
 }
@@ -35,25 +58,27 @@ gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant) {
     if (variant.meshCrossings && !variant.constant) desc.defines.push_back("MEDIA_MESH_CROSSINGS");
     if (variant.multiple) desc.defines.push_back("MEDIA_MULTIPLE");
     if (variant.rankList) desc.defines.push_back("SPLAT_RANK_LIST");
+    if (variant.depthTested) desc.defines.push_back("SPLAT_DEPTH_TESTED");
     return desc;
 }
 
-std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& flags, std::uint32_t minGap) {
+std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& flags, std::uint32_t minGap,
+                                std::uint8_t mask) {
     std::vector<SplatRun> runs;
     const auto count = static_cast<std::uint32_t>(order.size());
     for (std::uint32_t rank = 0; rank < count; ++rank) {
-        const std::uint8_t f = flags[order[rank]];
-        const bool crossing = (f & kSplatNearMesh) != 0, lamps = (f & kSplatNearLamp) != 0;
-        if (runs.empty() || runs.back().meshCrossings != crossing || runs.back().lamps != lamps) runs.push_back({rank, 0, crossing, lamps});
+        const std::uint8_t f = flags[order[rank]] & mask;
+        const SplatRun own{rank, 0, (f & kSplatNearMesh) != 0, (f & kSplatNearLamp) != 0, (f & kSplatClearOfMeshes) != 0};
+        if (runs.empty() || !sameVariant(runs.back(), own)) runs.push_back(own);
         ++runs.back().count;
     }
-    // Join a short plain run between two crossing runs of its own lamp bit into one crossing run.
+    // Join a short run between two runs of one variant that covers it into one run.
     std::vector<SplatRun> joined;
     for (std::size_t i = 0; i < runs.size(); ++i) {
         const SplatRun& run = runs[i];
-        const bool bridge = !run.meshCrossings && run.count < minGap && i + 1 < runs.size() && runs[i + 1].meshCrossings &&
-                            runs[i + 1].lamps == run.lamps;
-        if ((bridge || run.meshCrossings) && !joined.empty() && joined.back().meshCrossings && joined.back().lamps == run.lamps)
+        const bool bridge = !joined.empty() && run.count < minGap && i + 1 < runs.size() && sameVariant(joined.back(), runs[i + 1]) &&
+                            covers(joined.back(), run);
+        if (!joined.empty() && (bridge || sameVariant(joined.back(), run)))
             joined.back().count += run.count;
         else
             joined.push_back(run);
@@ -64,17 +89,20 @@ std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const s
 gpu::ResourceHandle ParticleSplatPass::add(gpu::FrameGraph& graph, GraphFrame& context, const ParticleGpuBuffer& buffer,
                                               const ParticleLightingPass& lighting, SplatVariant variant, std::vector<std::uint8_t> flags,
                                               const FragmentLamps& lamps, const MediaTarget& target) {
+    const bool depthTest = canDepthTest(graph.desc(context.sceneDepth), target);
     const auto& data = graph.addPass<SplatInputs>(
         "media_particle_splats",
         [&](gpu::PassBuilder& builder, SplatInputs& d) {
             d.media = declareMediaTarget(builder, target);
             declareInputs(builder, context, variant, lamps, d);
         },
-        [this, variant, flags = std::move(flags), &context, &buffer, &lighting, lamps, target](const gpu::PassResources& resources,
-                                                                                              const SplatInputs& d) {
+        [this, variant, flags = std::move(flags), &context, &buffer, &lighting, lamps, target, depthTest](
+            const gpu::PassResources& resources, const SplatInputs& d) {
             const gpu::Framebuffer fbo = bindMediaTarget(resources.id(d.media), target);
+            // Read-only (no depth writes), so the fetching variants may sample it while attached.
+            if (depthTest) glNamedFramebufferTexture(fbo.id(), GL_DEPTH_ATTACHMENT, resources.id(d.depth), 0);
             draw(resources, d, {.context = context, .buffer = buffer, .lighting = lighting, .variant = variant, .flags = flags, .lamps = lamps},
-                 target.fullResScale, mediaOver(target));
+                 target.fullResScale, depthTest ? depthTested(mediaOver(target)) : mediaOver(target));
         });
     return data.media;
 }
@@ -117,10 +145,13 @@ void ParticleSplatPass::draw(const gpu::PassResources& resources, const SplatInp
     gpu::applyPipeline(state);
     glBindVertexArray(vertexArray_.id());
     // The order is known only now: the upload pass sorted it.
-    for (const SplatRun& run : splatRuns(variant.rankList ? listed : s.buffer.order(), s.flags)) {
+    // Without the depth test every run fetches the depth.
+    const std::uint8_t mask = state.depth.test ? 0xFF : static_cast<std::uint8_t>(~kSplatClearOfMeshes);
+    for (const SplatRun& run : splatRuns(variant.rankList ? listed : s.buffer.order(), s.flags, 8, mask)) {
         SplatVariant own = variant;
         own.meshCrossings = run.meshCrossings;
         own.lamps = run.lamps;
+        own.depthTested = run.depthTested;
         const GLuint id = program(own).id();
         glUseProgram(id);
         glProgramUniform2f(id, 1, scale.x, scale.y);

@@ -20,24 +20,30 @@ struct SplatVariant {
     bool meshCrossings = false;  // the sun's mesh visibility per fragment where the lighting pass flags a crossing
     bool multiple = false;       // the multiple model: the sun's forward-peak orders (set by add from the frame)
     bool rankList = false;       // draws the ranks a list holds (set by draw when given one)
+    // Clipped by the depth test alone, its quad through the centre, with no scene-depth fetch (set
+    // by draw for a run clear of meshes). The others' quads sit at their sphere's nearest depth, so
+    // the test only drops what a surface hides whole, and their fragments fetch the depth.
+    bool depthTested = false;
 };
 // The splat program (particle_splats.*).
 gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant);
 
 // A run of consecutive draw ranks drawn with one program: with the mesh-crossing variant or not,
-// with the fragment lamps or not.
+// with the fragment lamps or not, clipped by the depth test alone or not.
 struct SplatRun {
     std::uint32_t first = 0, count = 0;
     bool meshCrossings = false;
     bool lamps = false;
+    bool depthTested = false;
 };
 // The runs of `order` (particle index per rank) by `flags` (per particle, SplatFlag bits): a
 // variant costs every fragment it draws, flagged or not (llvmpipe), so only the flagged ranks take
-// it. A gap of fewer than `minGap` ranks between two mesh-crossing runs joins them (a draw call each
-// costs more); the lamp bit never joins, as the lighting pass put the lamps of the particles
-// without it in their fit.
+// it. A gap of fewer than `minGap` ranks between two runs of one variant that can draw it (the
+// crossing variant, or the depth fetch) joins them (a draw call each costs more); the lamp bit
+// never joins, as the lighting pass put the lamps of the particles without it in their fit.
+// Flags are read through `mask`.
 std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const std::vector<std::uint8_t>& flags,
-                                std::uint32_t minGap = 8);
+                                std::uint32_t minGap = 8, std::uint8_t mask = 0xFF);
 
 class ParticleSplatPass {
 public:
@@ -71,7 +77,9 @@ public:
 
 private:
     const gpu::Program& program(const SplatVariant& variant);
-    gpu::Program programs_[64];  // by eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple + 32·rankList, built when first asked for
+    // By eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple + 32·rankList + 64·depthTested,
+    // built when first asked for.
+    gpu::Program programs_[128];
     gpu::Buffer ranks_;          // draw's `ranks`, grown as needed
     std::size_t ranksCapacity_ = 0;
     gpu::Texture kernelTable_;

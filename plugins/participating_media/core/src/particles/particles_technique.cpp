@@ -74,6 +74,14 @@ std::vector<std::uint8_t> splatFlags(const std::vector<std::uint8_t>& nearMesh, 
     return flags;
 }
 
+// At full resolution the splats may take the scene depth as their depth test's.
+void addClearOfMeshes(std::vector<std::uint8_t>& flags, const std::vector<OccluderBox>& meshes, const ParticleSet& particles,
+                      const gpu::View& view) {
+    const std::vector<std::uint8_t> clear = particlesClearOfMeshes(meshes, particles, view);
+    for (std::size_t i = 0; i < flags.size(); ++i)
+        if (clear[i] != 0) flags[i] |= kSplatClearOfMeshes;
+}
+
 class ParticlesTechnique final : public MediaTechnique {
     // What this frame's splats drew with, for their redraw at the edges.
     struct SplatEdges {
@@ -131,12 +139,16 @@ private:
         const bool crossings = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
         const bool lampRuns = lamps.lamps[0] >= 0;
         std::vector<std::uint8_t> flags = splatFlags(nearMesh, *frame.particles, context.host.lights, lamps);
+        if (context.host.occludersComplete && shared.target.size == glm::ivec2(v.width, v.height)) addClearOfMeshes(flags, context.host.occluders, *frame.particles, v);
         frame.report("exact_lighting", false);
         frame.report("constant_source", constant);
         frame.report("mesh_crossings", crossings);
         frame.report("lamp_particles", static_cast<long long>(std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) {
                                            return (f & kSplatNearLamp) != 0;
                                        })));
+        frame.report("depth_tested_particles", static_cast<long long>(std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) {
+                                                   return (f & kSplatClearOfMeshes) != 0;
+                                               })));
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
                            {.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}, lamps, flags);
         const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings};

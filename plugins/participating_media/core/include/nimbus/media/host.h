@@ -96,6 +96,10 @@ struct HostFrame {
     // in the per-particle fit). Empty: the medium is taken as free of meshes (blocks: a seam may
     // show where one is seen inside).
     std::vector<OccluderBox> occluders;
+    // Whether `occluders` boxes every mesh the scene depth holds. Then, at full resolution with a
+    // reversed-Z depth texture, `particles` splats clear of every box are clipped by the depth test
+    // alone, with no depth fetch (the same picture, faster); otherwise every splat fetches the depth.
+    bool occludersComplete = false;
 };
 
 // What renderLightSlices returns; valid until the next renderLightSlices.

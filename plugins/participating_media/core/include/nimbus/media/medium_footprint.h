@@ -81,6 +81,14 @@ std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& me
 std::vector<std::uint8_t> particlesNearLamps(const ParticleSet& particles, const std::vector<Light>& lights, std::span<const int> lamps,
                                              double reach);
 
+// Per particle (1/0): whether the depth test alone clips its splat exactly, with no scene-depth
+// fetch (particle_splat_pass.cpp): its billboard is a quad through the centre, and a pixel's ray
+// meets that plane within the half size of the quad of the centre, as its chord is, so where no
+// mesh box comes within that distance a surface lies in front of both or behind both. Not where
+// the quad covers the screen (the eye in or near the sphere, or it crosses the near plane), as
+// billboard.glsl decides with a margin.
+std::vector<std::uint8_t> particlesClearOfMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, const gpu::View& view);
+
 // Whether the eye (an orthographic camera's plane) lies inside some particle's sphere.
 bool eyeInsideMedium(const ParticleSet& particles, const gpu::View& view);
 
