@@ -24,7 +24,7 @@ in vec3 vNormal;
 // because llvmpipe runs a branch or a loop body under a mask even when no lane takes it.
 #if VERTEX_LIGHTS > 0
 in vec4 vShadowClip[VERTEX_LIGHTS];
-in float vShadowDepth[VERTEX_LIGHTS];
+in vec4 vShadowOffset[VERTEX_LIGHTS];
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
 in vec4 vSliceClip[VERTEX_LIGHTS];
 in float vSliceDepth[VERTEX_LIGHTS];
@@ -60,7 +60,7 @@ vec3 lightTerm(SurfaceBrdf brdf, vec3 n, vec3 v, LightSample s, float visibility
 #if VERTEX_LIGHTS > 0
 // Light i (< VERTEX_LIGHTS, a compile-time constant once inlined) from its interpolated view coordinates.
 vec3 vertexLight(int i, SurfaceBrdf brdf, vec3 n, vec3 v) {
-    float visibility = meshVisibilityAt(i, vShadowClip[i], vShadowDepth[i], n);
+    float visibility = meshVisibilityAt(i, vShadowClip[i], gl_FrontFacing ? vShadowOffset[i] : -vShadowOffset[i]);
     float transmittance = 1.0;
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
     int view = mediaLightSlices[i].x;

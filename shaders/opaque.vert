@@ -5,14 +5,15 @@
 #include "common/material.glsl"
 // VERTEX_LIGHTS (0–4): the frame's first lights, each with at most one shadow view and one slice
 // view (no cube maps), whose light-view coordinates are computed here: they are linear in the
-// position, so interpolating them is exact, and fragments skip two matrix products per view.
+// position, so interpolating them is exact, and fragments skip two matrix products per view. The
+// shadow lookup's normal offset too (exact on a flat face): its image in the shadow view.
 #if VERTEX_LIGHTS > 0
 #include "common/math.glsl"
 #include "common/lights.glsl"
 #include "common/light_views.glsl"
 #include "common/shadow_views.glsl"
 out vec4 vShadowClip[VERTEX_LIGHTS];
-out float vShadowDepth[VERTEX_LIGHTS];
+out vec4 vShadowOffset[VERTEX_LIGHTS];  // the front face's; a back face (double-sided) negates it
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
 #include "media/host/light_transmittance.glsl"
 out vec4 vSliceClip[VERTEX_LIGHTS];
@@ -66,7 +67,8 @@ void main() {
     for (int i = 0; i < VERTEX_LIGHTS; ++i) {
         GpuLightView shadow = shadowViews[max(int(lights[i].spot.z), 0)];  // unused when the light has none
         vShadowClip[i] = shadow.viewProjection * p;
-        vShadowDepth[i] = -(shadow.view * p).z;
+        vec3 offset = normalize(vNormal) * shadowOffset(shadow, max(-(shadow.view * p).z, 0.0));
+        vShadowOffset[i] = shadow.viewProjection * vec4(offset, 0.0);
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
         GpuLightView slices = mediaSliceViews[max(mediaLightSlices[i].x, 0)];
         vSliceClip[i] = slices.viewProjection * p;

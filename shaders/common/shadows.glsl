@@ -32,10 +32,6 @@ float shadowLookup(GpuLightView v, vec4 clip) {
 #endif
 }
 
-// The shadow lookup's offset off the surface: `offsetDir` (the normal) by a texel-sized amount at
-// view depth `depth`, to avoid acne.
-float shadowOffset(GpuLightView v, float depth) { return 1.5 * (v.params2.y * (v.params.x > 0.5 ? depth : 1.0)); }
-
 // Fraction of PCF taps that see light `lightIndex` from p, looked up from p + offsetDir · offset.
 float meshVisibility(int lightIndex, vec3 p, vec3 offsetDir) {
     GpuLight L = lights[lightIndex];
@@ -46,11 +42,11 @@ float meshVisibility(int lightIndex, vec3 p, vec3 offsetDir) {
     return shadowLookup(v, v.viewProjection * vec4(p + offsetDir * shadowOffset(v, depth), 1.0));
 }
 
-// The same for a light with at most one view, from p's clip coordinates `clip` and view depth `depth`
-// in it (linear in p, so the vertex stage computes them): the offset is added in clip space.
-float meshVisibilityAt(int lightIndex, vec4 clip, float depth, vec3 offsetDir) {
+// The same for a light with at most one view, from p's clip coordinates `clip` in it and the
+// normal offset's image `offsetClip` there, both from the vertex stage (opaque.vert): linear in p,
+// and on a flat face so is the offset, so interpolating them is exact there.
+float meshVisibilityAt(int lightIndex, vec4 clip, vec4 offsetClip) {
     int first = int(lights[lightIndex].spot.z);
-    if (first < 0) return 1.0;
-    GpuLightView v = shadowViews[first];
-    return shadowLookup(v, clip + v.viewProjection * vec4(offsetDir * shadowOffset(v, max(depth, 0.0)), 0.0));
+    float lit = shadowLookup(shadowViews[max(first, 0)], clip + offsetClip);
+    return first < 0 ? 1.0 : lit;
 }
