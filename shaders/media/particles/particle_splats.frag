@@ -45,19 +45,17 @@ void main() {
     SplatRay r = splatRay();
     float radius = vCentreRadius.w, invRadius = 1.0 / radius;
 #ifdef SPLAT_DEPTH_TESTED
-    // No surface comes within the quad's reach of the centre, so the depth test clipped it whole.
+    // No surface comes within the quad's reach of the centre, so the depth test clipped it whole,
+    // and the eye lies in no such sphere: the whole chord.
     float tSurface = 1e30;
+    float segment = kernelColumn(r.beta);
 #else
     float depth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
     float tSurface = depth * r.perDepth;
-#endif
-#ifdef SPLAT_DEPTH_TESTED
-    float segment = kernelColumn(r.beta);
-#else
     float segment = kernelSegment(r.beta, (tSurface - r.tc) * invRadius);
+#ifdef MEDIA_EYE_INSIDE
+    segment -= kernelSegment(r.beta, -r.tc * invRadius);
 #endif
-#if defined(MEDIA_EYE_INSIDE) && !defined(SPLAT_DEPTH_TESTED)
-    segment -= kernelSegment(r.beta, -r.tc * invRadius);  // the eye lies in no depth-tested sphere
 #endif
     float alpha = oneMinusExpNeg(vSigma * radius * max(segment, 0.0));
     vec3 source = splatSource(r.origin, r.dir, r.tc, r.perp, r.beta, r.beta2, tSurface, alpha);

@@ -244,18 +244,25 @@ std::vector<std::uint8_t> particlesClearOfMeshes(const std::vector<OccluderBox>&
     // The margins keep the GPU's float tests (billboard.glsl: d ≤ 1.001 R, depth − R ≤ 2 near) on this side.
     constexpr double kMargin = 1.01;
     std::vector<std::uint8_t> clear(particles.size(), 0);
+    std::vector<double> reach(particles.size(), 0.0);
+    double slack = 0.0;  // the most a quad reaches beyond its sphere, for hullNear
     for (std::size_t i = 0; i < particles.size(); ++i) {
         const glm::dvec3 c = particles.position[i] - view.origin;
         const double r = particles.radius[i], d = glm::length(c), depth = glm::dot(c, view.forward);
-        double reach = r;  // an orthographic quad: screen-aligned, half size R
+        double half = r;  // an orthographic quad: screen-aligned, half size R
         if (!view.orthographic) {
             if (d <= kMargin * r || depth - r <= kMargin * 2.0 * view.znear) continue;
-            reach = r * d / std::sqrt(d * d - r * r);
+            half = r * d / std::sqrt(d * d - r * r);
         }
-        reach *= kMargin;
-        clear[i] = std::none_of(meshes.begin(), meshes.end(), [&](const OccluderBox& box) {
-            return squaredDistance(box, particles.position[i]) < reach * reach;
-        }) ? 1 : 0;
+        clear[i] = 1;
+        reach[i] = kMargin * half;
+        slack = std::max(slack, reach[i] - r);
+    }
+    const Aabb bounds = particleBounds(particles);
+    for (const OccluderBox& box : meshes) {
+        if (!hullNear(box, bounds, glm::dvec3(slack))) continue;
+        for (std::size_t i = 0; i < particles.size(); ++i)
+            if (clear[i] != 0 && squaredDistance(box, particles.position[i]) < reach[i] * reach[i]) clear[i] = 0;
     }
     return clear;
 }

@@ -139,7 +139,8 @@ private:
         const bool crossings = std::any_of(nearMesh.begin(), nearMesh.end(), [](std::uint8_t n) { return n != 0; });
         const bool lampRuns = lamps.lamps[0] >= 0;
         std::vector<std::uint8_t> flags = splatFlags(nearMesh, *frame.particles, context.host.lights, lamps);
-        if (context.host.occludersComplete && shared.target.size == glm::ivec2(v.width, v.height)) addClearOfMeshes(flags, context.host.occluders, *frame.particles, v);
+        if (context.host.occludersComplete && shared.target.size == glm::ivec2(v.width, v.height))
+            addClearOfMeshes(flags, context.host.occluders, *frame.particles, v);
         frame.report("exact_lighting", false);
         frame.report("constant_source", constant);
         frame.report("mesh_crossings", crossings);
