@@ -16,6 +16,7 @@
 #define MEDIA_IMPOSTOR_MOMENTS_UNIT 8
 #define MEDIA_SLICE_IMPOSTOR_MOMENTS_UNIT 6  // block_slices.frag
 #define MEDIA_SEAM_MASK_UNIT 9
+#define MEDIA_IMPOSTOR_LIT_UNIT 13    // blocks: the light shaded per impostor texel (block_impostor_lighting.frag)
 #define MEDIA_VOXEL_SCATTERING_UNIT 5  // raymarch: rgb σ_t·albedo, a σ_t (sampler3D)
 #define MEDIA_VOXEL_EMISSION_UNIT 7    // raymarch: rgb σ_t·emission, a σ_t·g
 #define MEDIA_SLABS_UNIT 0

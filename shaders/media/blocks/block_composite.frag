@@ -42,12 +42,36 @@ layout(early_fragment_tests) in;
 
 layout(location = 0) out vec4 outColor;
 
+// After the impostor samplers, which the BLOCK_EXACT_SHADING build of shadeBlock reads.
+#include "media/blocks/block_shade.glsl"
+
+// BLOCK_LIT_IMPOSTOR: the block's light was shaded once per two by two impostor texels
+// (block_impostor_lighting.frag) with no surface on the ray, and is read here bilinearly,
+// premultiplied, while the opacity stays the pixel's own. A block no mesh comes near
+// (blocksNearMeshes) is never cut; one that a mesh comes near takes it only off the seam.
+#ifdef BLOCK_LIT_IMPOSTOR
+layout(binding = MEDIA_IMPOSTOR_LIT_UNIT) uniform sampler2D uImpostorLit;
+
+vec3 litSource(BlockTile tile, vec2 texel) {
+    ivec2 q[4];
+    float w[4];
+    tileBilinear(litTile(tile), 0.5 * texel, q, w);
+    vec4 lit = vec4(0.0);
+    for (int j = 0; j < 4; ++j) lit += w[j] * texelFetch(uImpostorLit, q[j], 0);
+    return lit.a > 0.0 ? lit.rgb / lit.a : vec3(0.0);
+}
+#endif
+
 void main() {
     BlockTile tile = blockTiles[vBlock.x];
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
     vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
-    float seam = uSeamPart == 2 ? seamWeight(uSeamMask, gl_FragCoord.xy, uSeamCell) : (uSeamPart == 1 ? 0.0 : 1.0);
-    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, uImpostorMoments, 3, tile, tileTexel(tile, ndc));
+    vec2 texel = tileTexel(tile, ndc);
+#if defined(BLOCK_LIT_IMPOSTOR) && !defined(BLOCK_EXACT_CUT)
+    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, uImpostorMoments, 0, tile, texel);
+#else
+    ImpostorSample s = readImpostor(uImpostorDepths, uImpostorSums1, uImpostorSums2, uImpostorMoments, 3, tile, texel);
+#endif
     if (!(s.tau > 0.0)) discard;
     // An instance of the prototype sits farther or nearer than the prototype the tile was made for.
     s.front += tile.instance.x;
@@ -57,67 +81,20 @@ void main() {
     cameraRay(fragCoord, origin, dir);
     float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
     float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
-    // [front, back] holds each particle's ±√3·R/3 (block_impostors.frag); its kernel reaches R.
-    // The tile knows only the block's mean radius: 1.5× it covers members up to that size, and a
-    // larger member's far tail takes the profile's cut.
-    float reach = blockKernelReach(tile.centreRadius.w);
-    if (tSurface <= s.front - reach) discard;  // the block lies wholly behind the surface
-    // The share of the block's optical depth in front of the surface: exact from the block's own
-    // particles where the surface lies among them, else from the depth profile the impostor's
-    // moments give (block_lighting.glsl blockProfile), which also shapes the shading below.
-    float momentOrigin = frameOrthographic() ? dot(tile.centreRadius.xyz, frame.cameraForward.xyz) : length(tile.centreRadius.xyz);
-    BlockProfile profile = blockProfile(s.front, s.back, momentOrigin, s.sums3.xy / s.tau);
-    bool cut = tSurface < s.back + reach;
-    // The exact cut walks the block's particles; the build without it (block_composite_pass.cpp
-    // draws with it only the blocks a mesh comes near) keeps the profile's cut for safety.
-#ifdef BLOCK_EXACT_CUT
-    ivec2 items = ivec2(tile.instance.zw);  // (count 0: an instance, whose particles are not listed)
-    float share = cut ? listedMassBefore(items, origin, dir, tSurface) : 1.0;
-    if (share < 0.0) share = profileMassBefore(profile, tSurface);
+#if defined(BLOCK_LIT_IMPOSTOR) && defined(BLOCK_EXACT_CUT)
+    // Off the seam (block_shading=seam draws the exact shading there): the surface cuts the block's
+    // opacity, and at most its kernels' tails, whose light the texels' stands for.
+    BlockProfile profile;
+    bool cut;
+    float share = blockShareBefore(tile, s, origin, dir, tSurface, profile, cut);
+    BlockShade shade = BlockShade(litSource(tile, texel), oneMinusExpNeg(s.tau * share));
+#elif defined(BLOCK_LIT_IMPOSTOR)
+    if (tSurface <= s.front - blockKernelReach(tile.centreRadius.w)) discard;  // wholly behind the surface
+    BlockShade shade = BlockShade(litSource(tile, texel), oneMinusExpNeg(s.tau));
 #else
-    float share = cut ? profileMassBefore(profile, tSurface) : 1.0;
+    float seam = uSeamPart == 2 ? seamWeight(uSeamMask, gl_FragCoord.xy, uSeamCell) : (uSeamPart == 1 ? 0.0 : 1.0);
+    BlockShade shade = shadeBlock(tile, vBlock, s, origin, dir, tSurface, ndc, seam);
 #endif
-    float tau = s.tau * share;
-    float alpha = oneMinusExpNeg(tau);
-    if (alpha <= 0.0) discard;
-
-    float end = min(s.back, tSurface);
-    GpuParticle block;
-    block.positionRadius = vec4(tile.centreRadius.xyz, tile.centreRadius.w);
-    block.albedoSigma = vec4(s.sums1.yzw / s.tau, 0.0);
-    block.emissionG = vec4(s.sums2.xyz / s.tau, clamp(s.sums2.w / s.tau, -0.999, 0.999));
-    block.extra = vec4(0.0, tile.lampSlices.x, 0.0, 0.0);  // y: blockLightDepth's (block_own_optical_depth.glsl)
-    LayerOrder layer = LayerOrder(-1, vBlock.y, tSurface, 1e30);
-    // What the light sees of it ends at the surface; a surface just in front of the block cuts
-    // only its kernels' tails, which lie within `reach` of it.
-    profile.front = end > s.front ? s.front : end - reach;
-    profile.back = end;
-    vec2 tails = vec2(end > s.front ? reach : 0.0, end < s.back ? 0.0 : reach);  // none past a cut
-    // What is left in front of a cut is no longer the normal the moments describe: its own
-    // particles say where its mass lies.
-#ifdef BLOCK_EXACT_CUT
-    if (cut && share > 0.0) {
-        profile.origin = origin;
-        profile.dir = dir;
-        profile.listed = items;
-    }
-#endif
-    vec3 source = vec3(0.0);
-#ifdef BLOCK_EXACT_SHADING
-    BlockProfile shaded = widenedByTails(profile, tails);  // where blockSegmentSource's shading points lie
-    vec2 span = vec2(shaded.front, shaded.back);
-    float neighbours = gatherOrderNeighbours(vBlock.x, vBlock.y, ndc, tSurface, span, origin, dir, uImpostorDepths, uImpostorMoments);
-    // The exact shading, and where the seam's weight falls off, the smooth one too (a loop, not two
-    // calls: one copy of blockSegmentSource's code).
-    for (int part = 0; part < (seam < 1.0 ? 2 : 1); ++part) {
-        bool exact = part == 0;
-        int pieces = exact ? exactShadingPieces(tau, neighbours) : BLOCK_SHADING_PIECES;
-        source += (exact ? seam : 1.0 - seam) *
-                  blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer, pieces, exact);
-    }
-#else
-    source = blockSegmentSource(origin, dir, profile, tails, tau, block, ivec2(tile.instance.zw), layer, BLOCK_SHADING_PIECES, false);
-#endif
-    source = mix(frame.fogColor.rgb, source, vFog);
-    outColor = vec4(source * alpha, alpha);
+    if (shade.alpha <= 0.0) discard;
+    outColor = vec4(mix(frame.fogColor.rgb, shade.source, vFog) * shade.alpha, shade.alpha);
 }

@@ -43,6 +43,15 @@ vec2 tileNdc(BlockTile tile, vec2 texel) {
     return tile.rect.xy + local * (tile.rect.zw - tile.rect.xy);
 }
 
+// The blocks' light (block_impostor_lighting.frag) is held at half the atlas's resolution: lit
+// texel i of a tile covers its atlas texels 2i and 2i + 1 on each axis (tiles start at even texels,
+// impostor_atlas.h kTileAlignment). A tile's place in that lit atlas, read bilinearly like any tile.
+BlockTile litTile(BlockTile tile) {
+    tile.atlas = vec4(tile.atlas.xy * 0.5, ceil(tile.atlas.zw * 0.5));
+    tile.instance.y = 0.0;  // never on the pixel grid
+    return tile;
+}
+
 // One impostor sample: total optical depth, front and back ray distances (Umenhoffer and Szirmay-Kalos §2.1), and the
 // optical-depth-weighted sums of albedo, emission, g and the depth moments.
 struct ImpostorSample {

@@ -76,7 +76,8 @@ void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
 // Measured at 320x180 (single scattering), band of 2166 pixels: exact 0.54 %, hard-clipped 2.62 %,
 // balanced 0.85 % (1.61 % before balanced took the sun's mesh visibility per fragment on the
 // particles a mesh crosses), fast 2.87 % (4.26 % before its splats were drawn again at full
-// resolution at the reduced target's edges near the wing), blocks 0.86 % / 4.23 %. Fast at full
+// resolution at the reduced target's edges near the wing), blocks 0.86 % / 4.44 % (4.23 % with fast's
+// old block_shading=seam and per-pixel lighting). Fast at full
 // resolution errs 2.29 %: the rest is its per-particle fit and coarser slices, not yet the
 // issue's 1.5x exact. The bounds below hold today's levels.
 TEST_F(SeamBand, WingThroughCloud) {
@@ -85,7 +86,7 @@ TEST_F(SeamBand, WingThroughCloud) {
 
 // Measured at 320x180, band of 1184 pixels: exact 0.79 %, hard-clipped 2.49 %, balanced 0.95 %
 // (0.98 % before), fast 3.17 % (5.56 % before the edges; 2.65 % at full resolution), blocks
-// 1.39 % / 5.33 %.
+// 1.39 % / 5.41 % (5.33 % before, as on the wing).
 TEST_F(SeamBand, CumulusAircraft) {
     expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.balancedOverExact = 1.3, .blocksOverExact = 2.0, .fastBand = 0.04});
 }

@@ -6,6 +6,7 @@
 #include "gpu/gl_test_context.h"
 #include "gpu/glsl_layout.h"
 #include "blocks/block_composite_pass.h"
+#include "blocks/block_impostor_lighting_pass.h"
 #include "common/local_light_programs.h"
 #include "particles/particle_lighting_pass.h"
 #include "particles/particle_pass.h"
@@ -130,6 +131,15 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(samplerUnit(composite.id(), "uImpostorMoments"), static_cast<GLint>(kImpostorMomentsUnit));
     EXPECT_EQ(samplerUnit(composite.id(), "uSeamMask"), static_cast<GLint>(kSeamMaskUnit));
     EXPECT_EQ(storageBinding(composite.id(), "DrawOrder"), static_cast<GLint>(kDrawOrderBinding));
+    const gpu::Program litComposite = gpu::compileProgram(blockCompositeDesc(kBlockExactCut | kBlockLitImpostor));
+    EXPECT_EQ(samplerUnit(litComposite.id(), "uImpostorLit"), static_cast<GLint>(kImpostorLitUnit));
+    const gpu::Program blockLighting = gpu::compileProgram(blockImpostorLightingDesc(true));
+    EXPECT_EQ(samplerUnit(blockLighting.id(), "uImpostorDepths"), static_cast<GLint>(kImpostorDepthsUnit));
+    EXPECT_EQ(samplerUnit(blockLighting.id(), "uImpostorSums1"), static_cast<GLint>(kImpostorSums1Unit));
+    EXPECT_EQ(samplerUnit(blockLighting.id(), "uImpostorSums2"), static_cast<GLint>(kImpostorSums2Unit));
+    EXPECT_EQ(samplerUnit(blockLighting.id(), "uImpostorMoments"), static_cast<GLint>(kImpostorMomentsUnit));
+    EXPECT_EQ(samplerUnit(blockLighting.id(), "mediaSlices"), static_cast<GLint>(kSlicesUnit));
+    EXPECT_EQ(storageBinding(blockLighting.id(), "DrawOrder"), static_cast<GLint>(kDrawOrderBinding));
 
     const gpu::Program lighting = gpu::compileProgram(particleLightingDesc({.exact = true, .meshCrossings = true}));
     EXPECT_EQ(storageBinding(lighting.id(), "SplatFlags"), static_cast<GLint>(kSplatFlagsBinding));

@@ -8,6 +8,7 @@
 
 #include "gpu/gl_test_context.h"
 #include "blocks/block_composite_pass.h"
+#include "blocks/block_impostor_lighting_pass.h"
 #include "particles/particle_lighting_pass.h"
 #include "particles/particle_pass.h"
 #include "particles/particle_splat_pass.h"
@@ -92,6 +93,10 @@ TEST_F(ShaderVariants, Raymarch) {
 TEST_F(ShaderVariants, BlockComposite) {
     std::vector<gpu::ProgramDesc> descs;
     for (std::uint8_t build = 0; build < 8; ++build) addBothLightings(descs, blockCompositeDesc(build));
+    // The light read from the impostor texels, cut or not (never with the exact shading), and the
+    // pass that shades it.
+    for (const std::uint8_t build : {0, 1, 2, 3}) addBothLightings(descs, blockCompositeDesc(build | kBlockLitImpostor));
+    for (const bool own : {false, true}) addBothLightings(descs, blockImpostorLightingDesc(own));
     expectCompiles(descs);
 }
 

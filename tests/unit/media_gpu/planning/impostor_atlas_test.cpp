@@ -29,6 +29,9 @@ void expectDisjointInside(const AtlasLayout& layout, int maxSize) {
         if (t.width == 0) continue;
         EXPECT_GE(t.x, 0);
         EXPECT_GE(t.y, 0);
+        // Aligned, so the half-resolution lit atlas holds each tile's texels two by two, disjoint.
+        EXPECT_EQ(t.x % kTileAlignment, 0) << "tile " << i;
+        EXPECT_EQ(t.y % kTileAlignment, 0) << "tile " << i;
         EXPECT_LE(t.x + t.width, layout.width) << "tile " << i;
         EXPECT_LE(t.y + t.height, layout.height) << "tile " << i;
         for (std::size_t j = i + 1; j < layout.tiles.size(); ++j)

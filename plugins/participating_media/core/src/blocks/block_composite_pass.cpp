@@ -19,7 +19,7 @@ inline constexpr GLint kSeamCellLocation = 5;   // block_composite.frag uSeamCel
 BlockCompositePass::BlockCompositePass() { programs(kBlockPlain); }
 
 LocalLightPrograms& BlockCompositePass::programs(std::uint8_t build) {
-    std::unique_ptr<LocalLightPrograms>& programs = programs_[build & 7];
+    std::unique_ptr<LocalLightPrograms>& programs = programs_[build & 15];
     if (!programs) programs = std::make_unique<LocalLightPrograms>(blockCompositeDesc(build));
     return *programs;
 }
@@ -29,6 +29,7 @@ gpu::ProgramDesc blockCompositeDesc(std::uint8_t build) {
     if (build & kBlockExactCut) desc.defines.push_back("BLOCK_EXACT_CUT");
     if (build & kBlockOwnParticles) desc.defines.push_back("BLOCK_OWN_PARTICLES");
     if (build & kBlockExactShading) desc.defines.push_back("BLOCK_EXACT_SHADING");
+    if (build & kBlockLitImpostor) desc.defines.push_back("BLOCK_LIT_IMPOSTOR");
     return desc;
 }
 
@@ -37,7 +38,7 @@ namespace {
 std::vector<BlockCompositePass::Run> buildRuns(const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds) {
     std::vector<BlockCompositePass::Run> runs;
     for (std::size_t r = 0; r < backToFront.size(); ++r) {
-        const std::uint8_t build = builds[backToFront[r]] & 7;
+        const std::uint8_t build = builds[backToFront[r]] & 15;
         if (runs.empty() || build != runs.back().build) runs.push_back({{static_cast<GLint>(r), 0}, build});
         ++runs.back().ranks.count;
     }
@@ -76,16 +77,30 @@ BlockCompositePass::Seam BlockCompositePass::addSeamPasses(gpu::FrameGraph& grap
     return seam;
 }
 
+// The blocks whose light is read from their impostor texels have it shaded there first.
+gpu::ResourceHandle BlockCompositePass::addLighting(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs,
+                                                    const BlockImpostorAtlas& atlas, const BlockGpuBuffers& blocks,
+                                                    const ParticleGpuBuffer& particles) {
+    std::vector<BlockImpostorLightingPass::Run> lit;
+    for (const Run& run : runs)
+        if (run.build & kBlockLitImpostor) lit.push_back({run.ranks, (run.build & kBlockOwnParticles) != 0});
+    if (lit.empty()) return {};
+    if (!lighting_) lighting_ = std::make_unique<BlockImpostorLightingPass>();
+    return lighting_->add(graph, context, atlas, std::move(lit), blocks, particles);
+}
+
 std::vector<BlockCompositePass::Draw> BlockCompositePass::planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam,
                                                                     const std::vector<Light>& lights, bool multiple) {
     std::vector<Draw> draws;
     for (const Run& run : runs) {
+        // The exact shading is per pixel; the smooth one reads the texels' light where they hold it.
         const auto smooth = static_cast<std::uint8_t>(run.build & ~kBlockExactShading);
+        const auto exact = static_cast<std::uint8_t>(run.build & ~kBlockLitImpostor);
         if (!seamOnly || !(run.build & kBlockExactShading)) {
-            draws.push_back({run.ranks, &programs(run.build).forLights(lights, multiple), 0});
+            draws.push_back({run.ranks, &programs(run.build & kBlockExactShading ? exact : run.build).forLights(lights, multiple), 0});
         } else if (seam) {
             draws.push_back({run.ranks, &programs(smooth).forLights(lights, multiple), 1});
-            draws.push_back({run.ranks, &programs(run.build).forLights(lights, multiple), 2});
+            draws.push_back({run.ranks, &programs(exact).forLights(lights, multiple), 2});
         } else {  // no block a mesh comes near: no seam
             draws.push_back({run.ranks, &programs(smooth).forLights(lights, multiple), 0});
         }
@@ -98,13 +113,14 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
                                             bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                             const MediaTarget& target) {
     struct Composite : LitMediaInputs {
-        gpu::ResourceHandle depths, sums1, sums2, moments, seamMask, seamStencil;
+        gpu::ResourceHandle depths, sums1, sums2, moments, seamMask, seamStencil, lit;
     };
     const int w = target.size.x, h = target.size.y;
     const std::vector<Run> runs = buildRuns(backToFront, builds);
     const int seamCell = seamMaskCell(target.size);
     const Seam seam = addSeamPasses(graph, context, runs, seamOnly, blocks, made, target, seamCell);
     const std::vector<Draw> draws = planDraws(runs, seamOnly, seam.mask.valid(), context.host.lights, context.multiple);
+    const gpu::ResourceHandle lit = addLighting(graph, context, runs, made, blocks, particles);
     const auto& data = graph.addPass<Composite>(
         "media_blocks",
         [&](gpu::PassBuilder& builder, Composite& d) {
@@ -113,6 +129,7 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
             d.sums1 = builder.read(made.sums1);
             d.sums2 = builder.read(made.sums2);
             d.moments = builder.read(made.moments);
+            if (lit.valid()) d.lit = builder.read(lit);
             if (seam.mask.valid()) {
                 d.seamMask = builder.read(seam.mask);
                 d.seamStencil = builder.read(seam.stencil);
@@ -136,6 +153,7 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
             glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));
             glBindTextureUnit(kImpostorMomentsUnit, r.id(d.moments));
             if (d.seamMask.valid()) glBindTextureUnit(kSeamMaskUnit, r.id(d.seamMask));
+            if (d.lit.valid()) glBindTextureUnit(kImpostorLitUnit, r.id(d.lit));
             glBindVertexArray(vertexArray_.id());
             for (const Draw& draw : draws) {
                 const GLuint program = draw.program->id();

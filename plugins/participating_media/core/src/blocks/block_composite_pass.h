@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "blocks/block_gpu_buffers.h"
+#include "blocks/block_impostor_lighting_pass.h"
 #include "blocks/block_impostor_pass.h"
 #include "blocks/block_seam_mask_pass.h"
 #include "blocks/block_seam_stencil_pass.h"
@@ -53,11 +54,14 @@ private:
     LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for
     Seam addSeamPasses(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs, bool seamOnly,
                        const BlockGpuBuffers& blocks, const BlockImpostorAtlas& atlas, const MediaTarget& target, int cell);
+    gpu::ResourceHandle addLighting(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs,
+                                    const BlockImpostorAtlas& atlas, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles);
     std::vector<Draw> planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam, const std::vector<Light>& lights, bool multiple);
 
-    std::unique_ptr<LocalLightPrograms> programs_[8];  // by BlockCompositeBuild bits
+    std::unique_ptr<LocalLightPrograms> programs_[16];  // by BlockCompositeBuild bits
     std::unique_ptr<BlockSeamMaskPass> seamMask_;        // made when a frame first needs them
     std::unique_ptr<BlockSeamStencilPass> seamStencil_;
+    std::unique_ptr<BlockImpostorLightingPass> lighting_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

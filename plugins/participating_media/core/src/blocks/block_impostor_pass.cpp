@@ -8,6 +8,7 @@ BlockImpostorAtlas addBlockImpostorPass(gpu::FrameGraph& graph, const BlockViewP
     return graph.addPass<BlockImpostorAtlas>(
         "block_impostors",
         [&](gpu::PassBuilder& builder, BlockImpostorAtlas& d) {
+            d.size = atlas;
             d.depths = builder.create("block_impostor_depths", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
             d.sums1 = builder.create("block_impostor_sums1", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
             d.sums2 = builder.create("block_impostor_sums2", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});

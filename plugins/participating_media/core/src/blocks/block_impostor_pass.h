@@ -11,6 +11,7 @@ namespace nimbus::media {
 // The camera's impostor atlas as frame-graph resources (the `block_impostors` pass).
 struct BlockImpostorAtlas {
     gpu::ResourceHandle depths, sums1, sums2, moments;
+    glm::ivec2 size{0};  // texels
 };
 // Adds the `block_impostors` pass: the camera's plan (tile set 0 of `blocks`) rendered into a new atlas.
 BlockImpostorAtlas addBlockImpostorPass(gpu::FrameGraph& graph, const BlockViewPlan& plan, const BlockGpuBuffers& blocks,

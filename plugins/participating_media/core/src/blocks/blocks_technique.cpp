@@ -43,8 +43,17 @@ const SettingField<BlocksSettings> kBlocksFields[] = {
               "whole rectangles (slowest)",
       .type = SettingType::Choice,
       .words = {"seam", "smooth", "exact"},
-      .defaultValue = "seam"},
+      .defaultValue = "seam (fast: smooth)"},
      &setChoice<&BlocksSettings::blockShading>},
+    {{.key = "block_lighting",
+      .help = "where the blocks' smooth shading is evaluated: at every pixel a block covers, or once per two by two texels of "
+              "its impostor, read back bilinearly (not near a point or spot light; block_shading's exact shading stays per pixel)",
+      .type = SettingType::Choice,
+      .words = {"pixel", "texel"},
+      .defaultValue = "pixel (balanced and fast: texel)"},
+     &setChoice<&BlocksSettings::lighting>,
+     // An instance's tile is the prototype's, lit where the prototype stands.
+     [](const BlocksSettings& s) { return !s.instancing; }},
 };
 
 // What blocks mode keeps for one frame: the partition and the impostor layouts, which the passes'
@@ -61,6 +70,7 @@ struct BlockFrame {
     std::vector<std::uint8_t> wideFromLamps;        // per block: the lamps' slices take its particles one by one
     std::vector<std::uint32_t> lampSliceParticles;  // those particles
     std::vector<std::uint8_t> builds;               // per block: the composite variant (kBlockExactCut, ...)
+    bool litImpostors = false;                      // block_lighting=texel: kBlockLitImpostor where no mesh comes near
 };
 
 class BlocksTechnique final : public MediaTechnique {
@@ -75,6 +85,7 @@ public:
         const std::vector<glm::dvec3> lamps = lampPositions(context.host.lights);
         frame_.partition = partitionIntoBlocks(*frame.particles, own_.blocks, lamps);
         frame_.instanced = own_.instancing;
+        frame_.litImpostors = own_.lighting == BlockLighting::Texel && !own_.instancing;
         frame_.prototype = choosePrototype(frame_.partition);
         frame_.lightPlans.clear();
         // An instance has no particles of its own to draw one by one.
@@ -202,6 +213,20 @@ void BlocksTechnique::planCamera(TechniqueFrame& frame, const GraphFrame& contex
             frame_.orderNeighbours = overlappingBlockLists(frame_.partition, frame_.backToFront);
         exactlyShaded = static_cast<int>(std::count(exact.begin(), exact.end(), std::uint8_t{1}));
     }
+    // A block takes its light from the texels wherever it is shaded smoothly: off the seam when
+    // block_shading=seam draws it exactly near a mesh, and with block_shading=smooth also where a
+    // mesh cuts it (its opacity is cut per pixel, its light is the whole column's). Not near a
+    // lamp (wideFromLamps): a ray's light peaks as it passes the lamp, sharper than two texels.
+    int litBlocks = 0;
+    const bool seamOnly = own_.blockShading == BlockShading::Seam;
+    for (std::size_t b = 0; b < frame_.builds.size(); ++b) {
+        std::uint8_t& build = frame_.builds[b];
+        const bool exact = (build & kBlockExactShading) != 0;
+        if (!frame_.litImpostors || (exact && !seamOnly) || frame_.wideFromLamps[b] != 0) continue;
+        build = static_cast<std::uint8_t>(build | kBlockLitImpostor);
+        ++litBlocks;
+    }
+    frame.report("texel_lit_blocks", static_cast<long long>(litBlocks));
     frame.report("exactly_shaded_blocks", static_cast<long long>(exactlyShaded));
 }
 
@@ -226,11 +251,20 @@ std::vector<BenchRow> blockBenchRows(const ParticleSet& particles, const std::ve
 
 }  // namespace
 
+BlocksSettings BlocksSettings::forTier(QualityTier tier) {
+    BlocksSettings s;
+    if (tier != QualityTier::Exact) s.lighting = BlockLighting::Texel;
+    // At fast's reduced resolution the exact seam bought no band error (docs/design-notes.md).
+    if (tier == QualityTier::Fast) s.blockShading = BlockShading::Smooth;
+    return s;
+}
+
 TechniqueEntry blocksTechnique() {
     return {.name = "blocks",
             .help = "impostors of particle blocks composited back to front, cut where a mesh reaches them",
             .settings = specsOf(kBlocksFields),
             .read = readerOf(kBlocksFields),
+            .idle = idleOf(kBlocksFields),
             .create = [] { return std::make_unique<BlocksTechnique>(); },
             .benchRows = blockBenchRows,
             .scalingBench = true};

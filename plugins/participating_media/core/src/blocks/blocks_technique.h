@@ -19,13 +19,20 @@ enum class BlockShading : std::uint8_t {
     Exact,   // exactly over those blocks' whole rectangles
 };
 
+// Where the light of a block no mesh comes near is evaluated. In the order of the block_lighting words.
+enum class BlockLighting : std::uint8_t {
+    Pixel,  // at every media texel the block covers
+    Texel,  // once per texel of its impostor, read back bilinearly (blocks/block_impostor_lighting_pass.h)
+};
+
 struct BlocksSettings {
     int blocks = 0;              // block count; 0: automatic (block_partition.h)
     float impostorScale = 0.0f;  // impostor texels per covered pixel; 0: 0.5
     bool instancing = false;     // one block prototype instanced at every block (the paper's b + N/b)
     BlockShading blockShading = BlockShading::Seam;
+    BlockLighting lighting = BlockLighting::Pixel;
 
-    static BlocksSettings forTier(QualityTier) { return {}; }
+    static BlocksSettings forTier(QualityTier tier);
 };
 
 TechniqueEntry blocksTechnique();

@@ -60,6 +60,7 @@ enum BlockCompositeBuild : std::uint8_t {
     kBlockExactCut = 1,       // BLOCK_EXACT_CUT: a mesh comes near (blocksNearMeshes)
     kBlockOwnParticles = 2,   // BLOCK_OWN_PARTICLES: lumps the slices do not resolve (blocksOfUnresolvedParticles)
     kBlockExactShading = 4,   // BLOCK_EXACT_SHADING: where a mesh is seen in the medium (blocksShadedExactly)
+    kBlockLitImpostor = 8,    // BLOCK_LIT_IMPOSTOR: its light read from the impostor texels' (block_lighting=texel)
 };
 
 }  // namespace nimbus::media

@@ -27,8 +27,8 @@ bool shelfPack(const std::vector<glm::ivec2>& sizes, const std::vector<std::size
         }
         if (y + s.y > maxSize) return false;
         tiles[i] = {x, y, s.x, s.y};
-        x += s.x;
-        shelf = std::max(shelf, s.y);
+        x += s.x + (s.x & 1);  // the next tile starts at an even texel (kTileAlignment)
+        shelf = std::max(shelf, s.y + (s.y & 1));
         usedWidth = std::max(usedWidth, x);
         usedHeight = std::max(usedHeight, y + shelf);
     }

@@ -34,6 +34,7 @@ inline constexpr GLuint kImpostorSums2Unit = 7;   // MEDIA_IMPOSTOR_SUMS2_UNIT
 inline constexpr GLuint kImpostorMomentsUnit = 8; // MEDIA_IMPOSTOR_MOMENTS_UNIT
 inline constexpr GLuint kSliceImpostorMomentsUnit = 6;  // MEDIA_SLICE_IMPOSTOR_MOMENTS_UNIT (block_slices.frag)
 inline constexpr GLuint kSeamMaskUnit = 9;        // MEDIA_SEAM_MASK_UNIT
+inline constexpr GLuint kImpostorLitUnit = 13;    // MEDIA_IMPOSTOR_LIT_UNIT (blocks: the light per impostor texel)
 inline constexpr GLuint kVoxelScatteringUnit = 5; // MEDIA_VOXEL_SCATTERING_UNIT (raymarch: never with the impostors)
 inline constexpr GLuint kVoxelEmissionUnit = 7;   // MEDIA_VOXEL_EMISSION_UNIT
 inline constexpr GLuint kEnvironmentUnit = 10;    // MEDIA_ENVIRONMENT_UNIT (multiple scattering)

@@ -18,6 +18,9 @@ struct AtlasTile {
 
 // Shelf-packs tiles of the requested sizes into an atlas no larger than maxSize per side, shrinking
 // every tile by the same factor until they fit. Deterministic (tallest first, ties by index).
+// Tiles start at multiples of kTileAlignment texels, so an atlas of half the resolution holds each
+// tile's texels two by two without overlap (the blocks' light, block_impostor_lighting_pass.h).
+inline constexpr int kTileAlignment = 2;
 struct AtlasLayout {
     int width = 0, height = 0;
     std::vector<AtlasTile> tiles;  // in the order of the requested sizes
