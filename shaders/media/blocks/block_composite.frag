@@ -26,6 +26,7 @@ layout(binding = MEDIA_IMPOSTOR_MOMENTS_UNIT) uniform sampler2D uImpostorMoments
 layout(binding = MEDIA_SEAM_MASK_UNIT) uniform sampler2D uSeamMask;         // media/blocks/block_seam.glsl; read where uSeamPart is 2
 
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
+layout(location = 6) uniform vec2 uFragOffset;    // the full-resolution pixel of the target's first texel (the edges: their rect)
 // Which texels this draw shades (block_composite_pass.cpp draws the blocks of a seam twice, once
 // per part, each behind a stencil test): 0 all; 1 only those off the seam (seamWeight 0); 2 only
 // those near it, where the BLOCK_EXACT_SHADING build shades exactly, mixed with the smooth shading
@@ -64,7 +65,7 @@ vec3 litSource(BlockTile tile, vec2 texel) {
 
 void main() {
     BlockTile tile = blockTiles[vBlock.x];
-    vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
+    vec2 fragCoord = gl_FragCoord.xy * uFullResScale + uFragOffset;  // the full-resolution position this texel stands for
     vec2 ndc = fragCoord * frame.viewport.zw * 2.0 - 1.0;
     vec2 texel = tileTexel(tile, ndc);
 #if defined(BLOCK_LIT_IMPOSTOR) && !defined(BLOCK_EXACT_CUT)

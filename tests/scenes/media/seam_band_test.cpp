@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "media_test_support.h"
@@ -76,8 +77,8 @@ void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
 // Measured at 320x180 (single scattering), band of 2166 pixels: exact 0.54 %, hard-clipped 2.62 %,
 // balanced 0.85 % (1.61 % before balanced took the sun's mesh visibility per fragment on the
 // particles a mesh crosses), fast 2.87 % (4.26 % before its splats were drawn again at full
-// resolution at the reduced target's edges near the wing), blocks 0.86 % / 4.44 % (4.23 % with fast's
-// old block_shading=seam and per-pixel lighting). Fast at full
+// resolution at the reduced target's edges near the wing), blocks 0.86 % / 2.96 % (4.23 % before
+// its edges were drawn again). Fast at full
 // resolution errs 2.29 %: the rest is its per-particle fit and coarser slices, not yet the
 // issue's 1.5x exact. The bounds below hold today's levels.
 TEST_F(SeamBand, WingThroughCloud) {
@@ -86,24 +87,26 @@ TEST_F(SeamBand, WingThroughCloud) {
 
 // Measured at 320x180, band of 1184 pixels: exact 0.79 %, hard-clipped 2.49 %, balanced 0.95 %
 // (0.98 % before), fast 3.17 % (5.56 % before the edges; 2.65 % at full resolution), blocks
-// 1.39 % / 5.41 % (5.33 % before, as on the wing).
+// 1.39 % / 3.35 % (5.33 % before, as on the wing).
 TEST_F(SeamBand, CumulusAircraft) {
     expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.balancedOverExact = 1.3, .blocksOverExact = 2.0, .fastBand = 0.04});
 }
 
 // Mixed resolution (fast tier, media_scale auto at ¼ here): the medium drawn again at full
 // resolution at the reduced image's edges near the wing takes the band most of the way to the
-// full-resolution frame's error, in both modes that redraw edges. Measured: particles 2.87 % with
-// it, 4.26 % without, 2.29 % at full resolution; raymarch 2.92 %, 4.26 %, 2.40 %.
+// full-resolution frame's error, in every mode that redraws edges. Measured: particles 2.87 % with
+// it, 4.26 % without, 2.29 % at full resolution; raymarch 2.92 %, 4.26 %, 2.40 %; blocks 2.96 %,
+// 4.44 %, 1.97 % (its full-resolution frame is the best of the three).
 TEST_F(SeamBand, MixedResolutionRedrawsTheEdgesNearTheWing) {
-    for (const char* mode : {"mode=particles", "mode=raymarch"}) {
+    const std::vector<std::pair<const char*, double>> modes{{"mode=particles", 1.35}, {"mode=raymarch", 1.35}, {"mode=blocks", 1.6}};
+    for (const auto& [mode, nearFull] : modes) {
         const std::vector<BandErrors> e =
             measure(mediaScene("wing_through_cloud"),
                     {{"quality=fast", mode}, {"quality=fast", mode, "mixed_resolution=off"}, {"quality=fast", mode, "media_scale=1"}},
                     {std::string(mode) + ", fast", "mixed_resolution=off", "media_scale=1"});
         ASSERT_EQ(e.size(), 3u);
         EXPECT_LE(e[0].band, 0.75 * e[1].band) << mode << ": the redraw removes a third of the band's error";
-        EXPECT_LE(e[0].band, 1.35 * e[2].band) << mode << ": and comes close to the full-resolution frame";
+        EXPECT_LE(e[0].band, nearFull * e[2].band) << mode << ": and comes close to the full-resolution frame";
     }
 }
 

@@ -15,6 +15,8 @@ namespace nimbus::media {
 inline constexpr GLint kFirstRankLocation = 2;  // block_composite.vert uFirstRank
 inline constexpr GLint kSeamPartLocation = 3;   // block_composite.frag uSeamPart
 inline constexpr GLint kSeamCellLocation = 5;   // block_composite.frag uSeamCell
+inline constexpr GLint kFullResScaleLocation = 1;  // block_composite.frag uFullResScale
+inline constexpr GLint kFragOffsetLocation = 6;    // block_composite.frag uFragOffset
 
 BlockCompositePass::BlockCompositePass() { programs(kBlockPlain); }
 
@@ -77,6 +79,19 @@ BlockCompositePass::Seam BlockCompositePass::addSeamPasses(gpu::FrameGraph& grap
     return seam;
 }
 
+// The edges (mixed resolution) have no seam mask: a run shaded exactly near a mesh is shaded
+// exactly over the edge pixels, the rest as their composite draws them.
+std::vector<BlockCompositePass::Draw> BlockCompositePass::planEdgeDraws(const std::vector<Run>& runs, const std::vector<Light>& lights,
+                                                                        bool multiple) {
+    std::vector<Draw> draws;
+    for (const Run& run : runs) {
+        const bool exact = (run.build & kBlockExactShading) != 0;
+        const auto build = static_cast<std::uint8_t>(exact ? run.build & ~kBlockLitImpostor : run.build);
+        draws.push_back({run.ranks, &programs(build).forLights(lights, multiple), 0});
+    }
+    return draws;
+}
+
 // The blocks whose light is read from their impostor texels have it shaded there first.
 gpu::ResourceHandle BlockCompositePass::addLighting(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs,
                                                     const BlockImpostorAtlas& atlas, const BlockGpuBuffers& blocks,
@@ -112,59 +127,71 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
                                             const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
                                             bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                             const MediaTarget& target) {
-    struct Composite : LitMediaInputs {
-        gpu::ResourceHandle depths, sums1, sums2, moments, seamMask, seamStencil, lit;
-    };
     const int w = target.size.x, h = target.size.y;
     const std::vector<Run> runs = buildRuns(backToFront, builds);
     const int seamCell = seamMaskCell(target.size);
     const Seam seam = addSeamPasses(graph, context, runs, seamOnly, blocks, made, target, seamCell);
     const std::vector<Draw> draws = planDraws(runs, seamOnly, seam.mask.valid(), context.host.lights, context.multiple);
-    const gpu::ResourceHandle lit = addLighting(graph, context, runs, made, blocks, particles);
-    const auto& data = graph.addPass<Composite>(
+    frame_ = {.atlas = made, .lit = addLighting(graph, context, runs, made, blocks, particles),
+              .edgeDraws = planEdgeDraws(runs, context.host.lights, context.multiple)};
+    const auto& data = graph.addPass<Inputs>(
         "media_blocks",
-        [&](gpu::PassBuilder& builder, Composite& d) {
+        [&](gpu::PassBuilder& builder, Inputs& d) {
             declareLitMediaInputs(builder, context, target, d);
-            d.depths = builder.read(made.depths);
-            d.sums1 = builder.read(made.sums1);
-            d.sums2 = builder.read(made.sums2);
-            d.moments = builder.read(made.moments);
-            if (lit.valid()) d.lit = builder.read(lit);
+            readInputs(builder, d);
             if (seam.mask.valid()) {
                 d.seamMask = builder.read(seam.mask);
                 d.seamStencil = builder.read(seam.stencil);
             }
         },
         [this, draws, &context, &blocks, &particles, w, h, seamCell, scale = target.fullResScale](const gpu::PassResources& r,
-                                                                                                 const Composite& d) {
+                                                                                                 const Inputs& d) {
             const gpu::Framebuffer fbo = bindClearedMediaTarget(r.id(d.media), {w, h});
             if (d.seamStencil.valid()) glNamedFramebufferTexture(fbo.id(), GL_DEPTH_STENCIL_ATTACHMENT, r.id(d.seamStencil), 0);
-            for (const Draw& draw : draws) {
-                glProgramUniform2f(draw.program->id(), 1, scale.x, scale.y);
-                glProgramUniform1i(draw.program->id(), kSeamCellLocation, seamCell);
-            }
-            context.blocks->bind();
-            blocks.bind(0);
-            particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
-            particles.bindLampNeighbourhoods();
-            bindLitMediaInputs(r, d);
-            glBindTextureUnit(kImpostorDepthsUnit, r.id(d.depths));
-            glBindTextureUnit(kImpostorSums1Unit, r.id(d.sums1));
-            glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));
-            glBindTextureUnit(kImpostorMomentsUnit, r.id(d.moments));
+            for (const Draw& draw : draws) glProgramUniform1i(draw.program->id(), kSeamCellLocation, seamCell);
+            bindInputs(r, d, context, blocks, particles);
             if (d.seamMask.valid()) glBindTextureUnit(kSeamMaskUnit, r.id(d.seamMask));
-            if (d.lit.valid()) glBindTextureUnit(kImpostorLitUnit, r.id(d.lit));
-            glBindVertexArray(vertexArray_.id());
-            for (const Draw& draw : draws) {
-                const GLuint program = draw.program->id();
-                glUseProgram(program);
-                glProgramUniform1i(program, kFirstRankLocation, draw.ranks.first);
-                glProgramUniform1i(program, kSeamPartLocation, draw.seamPart);
-                gpu::applyPipeline(drawState(draw.seamPart));
-                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, draw.ranks.count);
-            }
+            drawRuns(draws, scale, glm::vec2(0.0f), nullptr);
         });
     return data.media;
+}
+
+void BlockCompositePass::readInputs(gpu::PassBuilder& builder, Inputs& d) const {
+    d.depths = builder.read(frame_.atlas.depths);
+    d.sums1 = builder.read(frame_.atlas.sums1);
+    d.sums2 = builder.read(frame_.atlas.sums2);
+    d.moments = builder.read(frame_.atlas.moments);
+    if (frame_.lit.valid()) d.lit = builder.read(frame_.lit);
+}
+
+void BlockCompositePass::bindInputs(const gpu::PassResources& r, const Inputs& d, const GraphFrame& context, const BlockGpuBuffers& blocks,
+                                    const ParticleGpuBuffer& particles) const {
+    context.blocks->bind();
+    blocks.bind(0);
+    particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
+    particles.bindLampNeighbourhoods();
+    bindLitMediaInputs(r, d);
+    glBindTextureUnit(kImpostorDepthsUnit, r.id(d.depths));
+    glBindTextureUnit(kImpostorSums1Unit, r.id(d.sums1));
+    glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));
+    glBindTextureUnit(kImpostorMomentsUnit, r.id(d.moments));
+    if (d.lit.valid()) glBindTextureUnit(kImpostorLitUnit, r.id(d.lit));
+}
+
+// `scale` and `offset` map the target's texels to full-resolution pixels (block_composite.frag);
+// `edges`: the state every draw takes instead of its own (the edges' stencil test).
+void BlockCompositePass::drawRuns(const std::vector<Draw>& draws, glm::vec2 scale, glm::vec2 offset, const gpu::PipelineState* edges) const {
+    glBindVertexArray(vertexArray_.id());
+    for (const Draw& draw : draws) {
+        const GLuint program = draw.program->id();
+        glUseProgram(program);
+        glProgramUniform2f(program, kFullResScaleLocation, scale.x, scale.y);
+        glProgramUniform2f(program, kFragOffsetLocation, offset.x, offset.y);
+        glProgramUniform1i(program, kFirstRankLocation, draw.ranks.first);
+        glProgramUniform1i(program, kSeamPartLocation, draw.seamPart);
+        gpu::applyPipeline(edges != nullptr ? *edges : drawState(draw.seamPart));
+        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, draw.ranks.count);
+    }
 }
 
 }  // namespace nimbus::media

@@ -9,6 +9,7 @@
 #include "blocks/block_impostor_pass.h"
 #include "blocks/block_seam_mask_pass.h"
 #include "blocks/block_seam_stencil_pass.h"
+#include "common/lit_media_inputs.h"
 #include "common/local_light_programs.h"
 #include "common/particle_buffer.h"
 #include "common/media_target.h"
@@ -49,6 +50,22 @@ public:
     struct Seam {
         gpu::ResourceHandle mask, stencil;
     };
+    // What its draws read.
+    struct Inputs : LitMediaInputs {
+        gpu::ResourceHandle depths, sums1, sums2, moments, seamMask, seamStencil, lit;
+    };
+    // This frame's, for its edges (block_composite_edges_pass.cpp): the atlas, its light and the
+    // draws the edges take.
+    struct Frame {
+        BlockImpostorAtlas atlas;
+        gpu::ResourceHandle lit;
+        std::vector<Draw> edgeDraws;
+    };
+    const Frame& frame() const { return frame_; }
+    void readInputs(gpu::PassBuilder& builder, Inputs& d) const;  // the atlas and its light
+    void bindInputs(const gpu::PassResources& r, const Inputs& d, const GraphFrame& context, const BlockGpuBuffers& blocks,
+                    const ParticleGpuBuffer& particles) const;
+    void drawRuns(const std::vector<Draw>& draws, glm::vec2 scale, glm::vec2 offset, const gpu::PipelineState* edges) const;
 
 private:
     LocalLightPrograms& programs(std::uint8_t build);  // compiled when first asked for
@@ -56,12 +73,14 @@ private:
                        const BlockGpuBuffers& blocks, const BlockImpostorAtlas& atlas, const MediaTarget& target, int cell);
     gpu::ResourceHandle addLighting(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs,
                                     const BlockImpostorAtlas& atlas, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles);
+    std::vector<Draw> planEdgeDraws(const std::vector<Run>& runs, const std::vector<Light>& lights, bool multiple);
     std::vector<Draw> planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam, const std::vector<Light>& lights, bool multiple);
 
     std::unique_ptr<LocalLightPrograms> programs_[16];  // by BlockCompositeBuild bits
     std::unique_ptr<BlockSeamMaskPass> seamMask_;        // made when a frame first needs them
     std::unique_ptr<BlockSeamStencilPass> seamStencil_;
     std::unique_ptr<BlockImpostorLightingPass> lighting_;
+    Frame frame_;
     gpu::VertexArray vertexArray_ = gpu::createVertexArray();
 };
 

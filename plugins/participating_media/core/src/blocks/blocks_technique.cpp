@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "blocks/block_composite_edges_pass.h"
 #include "blocks/block_composite_pass.h"
 #include "blocks/block_gpu_buffers.h"
 #include "blocks/block_impostor_pass.h"
@@ -14,6 +15,7 @@
 #include "common/shared_frame.h"
 #include "nimbus/base/settings.h"
 #include "nimbus/media/block_partition.h"
+#include "nimbus/media/medium_footprint.h"
 #include "planning/block_classification.h"
 #include "planning/block_view_plan.h"
 
@@ -155,8 +157,16 @@ public:
         if (!compositePass_) compositePass_ = std::make_unique<BlockCompositePass>();
         const SharedFrame& shared = *frame.shared;
         const BlockImpostorAtlas atlas = addBlockImpostorPass(graph, frame_.cameraPlan, *buffers_, *shared.buffer, *impostors_);
+        edgeRect_ = frame.settings->upsampleOnly ? glm::ivec4(0)
+                                                 : meshEdgeRect(context.host.occluders, *frame.particles, context.host.camera, shared.target.size);
         return compositePass_->add(graph, context, atlas, frame_.backToFront, frame_.builds, own_.blockShading == BlockShading::Seam,
                                    *buffers_, *shared.buffer, shared.target);
+    }
+
+    // Mixed resolution where a mesh enters the particles: the blocks composited again there.
+    glm::ivec4 edgeRect() const override { return edgeRect_; }
+    gpu::ResourceHandle addEdges(gpu::FrameGraph& graph, GraphFrame& context, TechniqueFrame& frame, const EdgeTarget& edges) override {
+        return addBlockCompositeEdges(graph, context, *compositePass_, *buffers_, *frame.shared->buffer, edges);
     }
 
 private:
@@ -176,6 +186,7 @@ private:
     std::unique_ptr<BlockCompositePass> compositePass_;
     std::unique_ptr<BlockSlicePass> slicePass_;
     std::unique_ptr<BlockLampSlicePass> lampSlicePass_;
+    glm::ivec4 edgeRect_{0};  // this frame's, as addMedia planned it
 };
 
 // Back to front by distance from the eye to the block centre (depth along the axis when orthographic).
@@ -262,6 +273,7 @@ BlocksSettings BlocksSettings::forTier(QualityTier tier) {
 TechniqueEntry blocksTechnique() {
     return {.name = "blocks",
             .help = "impostors of particle blocks composited back to front, cut where a mesh reaches them",
+            .edges = true,
             .settings = specsOf(kBlocksFields),
             .read = readerOf(kBlocksFields),
             .idle = idleOf(kBlocksFields),
