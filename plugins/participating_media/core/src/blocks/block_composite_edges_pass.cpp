@@ -7,7 +7,7 @@
 
 namespace nimbus::media {
 
-gpu::ResourceHandle addBlockCompositeEdges(gpu::FrameGraph& graph, GraphFrame& context, const BlockCompositePass& composite,
+gpu::ResourceHandle addBlockCompositeEdges(gpu::FrameGraph& graph, GraphFrame& context, BlockCompositePass& composite,
                                            const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles, const EdgeTarget& edges) {
     struct Data : BlockCompositePass::Inputs {
         gpu::ResourceHandle stencil;
@@ -20,13 +20,10 @@ gpu::ResourceHandle addBlockCompositeEdges(gpu::FrameGraph& graph, GraphFrame& c
             readLitMediaInputs(builder, context, d);
             composite.readInputs(builder, d);
         },
-        [&composite, &context, &blocks, &particles, draws = composite.frame().edgeDraws, rect = edges.rect](const gpu::PassResources& r,
-                                                                                                         const Data& d) {
-            const gpu::Framebuffer fbo = edgeFramebuffer(r.id(d.media), r.id(d.stencil));
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            // The whole viewport, shifted so that the rect lands on the target: the rest is clipped.
+        [&composite, &context, &blocks, &particles, draws = composite.edgeDraws(context.host.lights, context.multiple),
+         rect = edges.rect](const gpu::PassResources& r, const Data& d) {
             const gpu::View& v = context.host.camera;
-            glViewport(-rect.x, -rect.y, v.width, v.height);
+            const gpu::Framebuffer fbo = bindEdgeFramebuffer(r.id(d.media), r.id(d.stencil), rect, {v.width, v.height});
             composite.bindInputs(r, d, context, blocks, particles);
             const gpu::PipelineState state = onEdges(kMediaOver);
             composite.drawRuns(draws, glm::vec2(1.0f), glm::vec2(rect.x, rect.y), &state);

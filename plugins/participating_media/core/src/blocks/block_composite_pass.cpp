@@ -79,12 +79,9 @@ BlockCompositePass::Seam BlockCompositePass::addSeamPasses(gpu::FrameGraph& grap
     return seam;
 }
 
-// The edges (mixed resolution) have no seam mask: a run shaded exactly near a mesh is shaded
-// exactly over the edge pixels, the rest as their composite draws them.
-std::vector<BlockCompositePass::Draw> BlockCompositePass::planEdgeDraws(const std::vector<Run>& runs, const std::vector<Light>& lights,
-                                                                        bool multiple) {
+std::vector<BlockCompositePass::Draw> BlockCompositePass::edgeDraws(const std::vector<Light>& lights, bool multiple) {
     std::vector<Draw> draws;
-    for (const Run& run : runs) {
+    for (const Run& run : frame_.runs) {
         const bool exact = (run.build & kBlockExactShading) != 0;
         const auto build = static_cast<std::uint8_t>(exact ? run.build & ~kBlockLitImpostor : run.build);
         draws.push_back({run.ranks, &programs(build).forLights(lights, multiple), 0});
@@ -132,8 +129,7 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
     const int seamCell = seamMaskCell(target.size);
     const Seam seam = addSeamPasses(graph, context, runs, seamOnly, blocks, made, target, seamCell);
     const std::vector<Draw> draws = planDraws(runs, seamOnly, seam.mask.valid(), context.host.lights, context.multiple);
-    frame_ = {.atlas = made, .lit = addLighting(graph, context, runs, made, blocks, particles),
-              .edgeDraws = planEdgeDraws(runs, context.host.lights, context.multiple)};
+    frame_ = {.atlas = made, .lit = addLighting(graph, context, runs, made, blocks, particles), .runs = runs};
     const auto& data = graph.addPass<Inputs>(
         "media_blocks",
         [&](gpu::PassBuilder& builder, Inputs& d) {
@@ -157,10 +153,7 @@ gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& 
 }
 
 void BlockCompositePass::readInputs(gpu::PassBuilder& builder, Inputs& d) const {
-    d.depths = builder.read(frame_.atlas.depths);
-    d.sums1 = builder.read(frame_.atlas.sums1);
-    d.sums2 = builder.read(frame_.atlas.sums2);
-    d.moments = builder.read(frame_.atlas.moments);
+    d.atlas = readBlockImpostors(builder, frame_.atlas);
     if (frame_.lit.valid()) d.lit = builder.read(frame_.lit);
 }
 
@@ -171,10 +164,7 @@ void BlockCompositePass::bindInputs(const gpu::PassResources& r, const Inputs& d
     particles.bindParticles();  // the listed particles around each lamp (lamp_neighbourhood.glsl)
     particles.bindLampNeighbourhoods();
     bindLitMediaInputs(r, d);
-    glBindTextureUnit(kImpostorDepthsUnit, r.id(d.depths));
-    glBindTextureUnit(kImpostorSums1Unit, r.id(d.sums1));
-    glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));
-    glBindTextureUnit(kImpostorMomentsUnit, r.id(d.moments));
+    bindBlockImpostors(r, d.atlas);
     if (d.lit.valid()) glBindTextureUnit(kImpostorLitUnit, r.id(d.lit));
 }
 

@@ -52,16 +52,18 @@ public:
     };
     // What its draws read.
     struct Inputs : LitMediaInputs {
-        gpu::ResourceHandle depths, sums1, sums2, moments, seamMask, seamStencil, lit;
+        BlockImpostorReads atlas;
+        gpu::ResourceHandle seamMask, seamStencil, lit;
     };
-    // This frame's, for its edges (block_composite_edges_pass.cpp): the atlas, its light and the
-    // draws the edges take.
+    // This frame's, for its edges (block_composite_edges_pass.cpp): the atlas, its light and runs.
     struct Frame {
         BlockImpostorAtlas atlas;
         gpu::ResourceHandle lit;
-        std::vector<Draw> edgeDraws;
+        std::vector<Run> runs;
     };
-    const Frame& frame() const { return frame_; }
+    // The draws of this frame's edges, planned (and their programs compiled) only when drawn:
+    // they have no seam mask, so a run shaded exactly near a mesh is shaded exactly there.
+    std::vector<Draw> edgeDraws(const std::vector<Light>& lights, bool multiple);
     void readInputs(gpu::PassBuilder& builder, Inputs& d) const;  // the atlas and its light
     void bindInputs(const gpu::PassResources& r, const Inputs& d, const GraphFrame& context, const BlockGpuBuffers& blocks,
                     const ParticleGpuBuffer& particles) const;
@@ -73,7 +75,6 @@ private:
                        const BlockGpuBuffers& blocks, const BlockImpostorAtlas& atlas, const MediaTarget& target, int cell);
     gpu::ResourceHandle addLighting(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs,
                                     const BlockImpostorAtlas& atlas, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles);
-    std::vector<Draw> planEdgeDraws(const std::vector<Run>& runs, const std::vector<Light>& lights, bool multiple);
     std::vector<Draw> planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam, const std::vector<Light>& lights, bool multiple);
 
     std::unique_ptr<LocalLightPrograms> programs_[16];  // by BlockCompositeBuild bits

@@ -3,8 +3,8 @@
 
 #include "common/frame_blocks.h"
 #include "common/lit_media_inputs.h"
+#include "nimbus/gpu/fullscreen_pass.h"
 #include "nimbus/gpu/pipeline_state.h"
-#include "nimbus/media/gpu_bindings.h"
 #include "nimbus/media/impostor_atlas.h"
 
 namespace nimbus::media {
@@ -27,7 +27,7 @@ LocalLightPrograms& BlockImpostorLightingPass::programs(bool ownParticles) {
 gpu::ResourceHandle BlockImpostorLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& atlas,
                                                    std::vector<Run> runs, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles) {
     struct Lighting : LitMediaInputs {
-        gpu::ResourceHandle depths, sums1, sums2, moments;
+        BlockImpostorReads atlas;
     };
     std::vector<std::pair<Run, const gpu::Program*>> draws;
     for (const Run& run : runs) draws.emplace_back(run, &programs(run.ownParticles).forLights(context.host.lights, context.multiple));
@@ -38,15 +38,10 @@ gpu::ResourceHandle BlockImpostorLightingPass::add(gpu::FrameGraph& graph, Graph
         [&](gpu::PassBuilder& builder, Lighting& d) {
             d.media = builder.create("block_impostor_lit", {GL_TEXTURE_2D, GL_RGBA32F, size.x, size.y, 1, 1});
             readLitMediaInputs(builder, context, d);
-            d.depths = builder.read(atlas.depths);
-            d.sums1 = builder.read(atlas.sums1);
-            d.sums2 = builder.read(atlas.sums2);
-            d.moments = builder.read(atlas.moments);
+            d.atlas = readBlockImpostors(builder, atlas);
         },
         [this, draws, &context, &blocks, &particles, size](const gpu::PassResources& r, const Lighting& d) {
-            gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, r.id(d.media), 0);
-            glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+            const gpu::Framebuffer fbo = gpu::singleTargetFramebuffer(r.id(d.media), GL_RGBA32F);
             glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
             glViewport(0, 0, size.x, size.y);
             gpu::applyPipeline(gpu::PipelineState{});  // each texel written once: no blending
@@ -55,10 +50,7 @@ gpu::ResourceHandle BlockImpostorLightingPass::add(gpu::FrameGraph& graph, Graph
             particles.bindParticles();
             particles.bindLampNeighbourhoods();
             bindLitMediaInputs(r, d);
-            glBindTextureUnit(kImpostorDepthsUnit, r.id(d.depths));
-            glBindTextureUnit(kImpostorSums1Unit, r.id(d.sums1));
-            glBindTextureUnit(kImpostorSums2Unit, r.id(d.sums2));
-            glBindTextureUnit(kImpostorMomentsUnit, r.id(d.moments));
+            bindBlockImpostors(r, d.atlas);
             glBindVertexArray(vertexArray_.id());
             for (const auto& [run, program] : draws) {
                 glUseProgram(program->id());

@@ -1,6 +1,19 @@
 #include "blocks/block_impostor_pass.h"
 
+#include "nimbus/media/gpu_bindings.h"
+
 namespace nimbus::media {
+
+BlockImpostorReads readBlockImpostors(gpu::PassBuilder& builder, const BlockImpostorAtlas& atlas) {
+    return {builder.read(atlas.depths), builder.read(atlas.sums1), builder.read(atlas.sums2), builder.read(atlas.moments)};
+}
+
+void bindBlockImpostors(const gpu::PassResources& resources, const BlockImpostorReads& reads) {
+    glBindTextureUnit(kImpostorDepthsUnit, resources.id(reads.depths));
+    glBindTextureUnit(kImpostorSums1Unit, resources.id(reads.sums1));
+    glBindTextureUnit(kImpostorSums2Unit, resources.id(reads.sums2));
+    glBindTextureUnit(kImpostorMomentsUnit, resources.id(reads.moments));
+}
 
 BlockImpostorAtlas addBlockImpostorPass(gpu::FrameGraph& graph, const BlockViewPlan& plan, const BlockGpuBuffers& blocks,
                                         const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors) {

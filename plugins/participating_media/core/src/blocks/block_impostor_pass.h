@@ -13,6 +13,13 @@ struct BlockImpostorAtlas {
     gpu::ResourceHandle depths, sums1, sums2, moments;
     glm::ivec2 size{0};  // texels
 };
+// A later pass's reads of the atlas, and their binding at the impostor units (gpu_bindings.h).
+struct BlockImpostorReads {
+    gpu::ResourceHandle depths, sums1, sums2, moments;
+};
+BlockImpostorReads readBlockImpostors(gpu::PassBuilder& builder, const BlockImpostorAtlas& atlas);
+void bindBlockImpostors(const gpu::PassResources& resources, const BlockImpostorReads& reads);
+
 // Adds the `block_impostors` pass: the camera's plan (tile set 0 of `blocks`) rendered into a new atlas.
 BlockImpostorAtlas addBlockImpostorPass(gpu::FrameGraph& graph, const BlockViewPlan& plan, const BlockGpuBuffers& blocks,
                                         const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors);

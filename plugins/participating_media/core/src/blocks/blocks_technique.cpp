@@ -72,7 +72,6 @@ struct BlockFrame {
     std::vector<std::uint8_t> wideFromLamps;        // per block: the lamps' slices take its particles one by one
     std::vector<std::uint32_t> lampSliceParticles;  // those particles
     std::vector<std::uint8_t> builds;               // per block: the composite variant (kBlockExactCut, ...)
-    bool litImpostors = false;                      // block_lighting=texel: kBlockLitImpostor where no mesh comes near
 };
 
 class BlocksTechnique final : public MediaTechnique {
@@ -87,7 +86,6 @@ public:
         const std::vector<glm::dvec3> lamps = lampPositions(context.host.lights);
         frame_.partition = partitionIntoBlocks(*frame.particles, own_.blocks, lamps);
         frame_.instanced = own_.instancing;
-        frame_.litImpostors = own_.lighting == BlockLighting::Texel && !own_.instancing;
         frame_.prototype = choosePrototype(frame_.partition);
         frame_.lightPlans.clear();
         // An instance has no particles of its own to draw one by one.
@@ -230,10 +228,11 @@ void BlocksTechnique::planCamera(TechniqueFrame& frame, const GraphFrame& contex
     // lamp (wideFromLamps): a ray's light peaks as it passes the lamp, sharper than two texels.
     int litBlocks = 0;
     const bool seamOnly = own_.blockShading == BlockShading::Seam;
+    const bool lit = own_.lighting == BlockLighting::Texel && !frame_.instanced;
     for (std::size_t b = 0; b < frame_.builds.size(); ++b) {
         std::uint8_t& build = frame_.builds[b];
         const bool exact = (build & kBlockExactShading) != 0;
-        if (!frame_.litImpostors || (exact && !seamOnly) || frame_.wideFromLamps[b] != 0) continue;
+        if (!lit || (exact && !seamOnly) || frame_.wideFromLamps[b] != 0) continue;
         build = static_cast<std::uint8_t>(build | kBlockLitImpostor);
         ++litBlocks;
     }

@@ -21,11 +21,8 @@ gpu::ResourceHandle addParticleSplatEdges(gpu::FrameGraph& graph, GraphFrame& co
             ParticleSplatPass::declareInputs(builder, context, draw.variant, draw.lamps, d);
         },
         [&splats, draw = std::move(draw), &context, &buffer, &lighting, rect = edges.rect](const gpu::PassResources& r, const Data& d) {
-            const gpu::Framebuffer fbo = edgeFramebuffer(r.id(d.media), r.id(d.stencil));
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
-            // The whole viewport, shifted so that the rect lands on the target: the rest is clipped.
             const gpu::View& v = context.host.camera;
-            glViewport(-rect.x, -rect.y, v.width, v.height);
+            const gpu::Framebuffer fbo = bindEdgeFramebuffer(r.id(d.media), r.id(d.stencil), rect, {v.width, v.height});
             // The ranks of the particles that reach the rect, in draw order (known only now: the
             // upload pass sorted it); the others would cost their vertices and clipped quads.
             std::vector<std::uint32_t> ranks;

@@ -26,6 +26,13 @@ gpu::Framebuffer edgeFramebuffer(GLuint color, GLuint stencil) {
     return fbo;
 }
 
+gpu::Framebuffer bindEdgeFramebuffer(GLuint color, GLuint stencil, glm::ivec4 rect, glm::ivec2 viewport) {
+    gpu::Framebuffer fbo = edgeFramebuffer(color, stencil);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+    glViewport(-rect.x, -rect.y, viewport.x, viewport.y);
+    return fbo;
+}
+
 gpu::PipelineState onEdges(gpu::PipelineState state) {
     state.stencil = {.test = true, .compare = GL_EQUAL, .reference = 1, .readMask = 0xFF, .writeMask = 0x00};
     return state;

@@ -16,6 +16,9 @@ namespace nimbus::media {
 // so a host takes exactly the pixels drawn, whatever its own depth arithmetic.
 // A framebuffer on an edge target: its colour and its stencil (as `color` and `stencil` resolve them).
 gpu::Framebuffer edgeFramebuffer(GLuint color, GLuint stencil);
+// The same, bound, with the viewport of a `viewport`-sized frame shifted so that the edge rect lands
+// on the target (the rest is clipped): how a technique that draws in frame coordinates draws edges.
+gpu::Framebuffer bindEdgeFramebuffer(GLuint color, GLuint stencil, glm::ivec4 rect, glm::ivec2 viewport);
 // `state` where the edge stencil is 1, the stencil read only: how a technique draws its edges.
 gpu::PipelineState onEdges(gpu::PipelineState state);
 
