@@ -113,7 +113,9 @@ TEST_F(CloudBlocksTest, TexelLightingKeepsTheSeamAndReadsTheLightBackElsewhere) 
         EXPECT_GT(apart, 0.0) << tier << ": the texels' light must be read back";
         EXPECT_LE(apart, 0.002) << tier;
         EXPECT_LE(error, pixelError + 0.001) << tier;
-        if (std::string(tier) == "quality=balanced") EXPECT_EQ(bandDiffers, 0u);
+        if (std::string(tier) == "quality=balanced") {
+            EXPECT_EQ(bandDiffers, 0u);
+        }
     }
 }
 

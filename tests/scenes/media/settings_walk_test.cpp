@@ -174,7 +174,7 @@ TEST_P(SettingsWalk, EveryKeyInEveryTierChangesTheFrameOrIsRefused) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMode, SettingsWalk, ::testing::ValuesIn(kWalkedModes),
-                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 class SettingsWalkModes : public GlSceneTest {};
 
