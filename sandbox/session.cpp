@@ -87,6 +87,7 @@ void Session::adoptRenderers(Session& previous) {
     auto& old = previous.app().resource<media::ecs::MediaRendererState>();
     media.renderer = std::move(old.renderer);
     media.extension = std::move(old.extension);
+    if (media.renderer) media.renderer->forgetFrames();  // this session's frames do not follow the old one's
 }
 
 double Session::time() const { return scene::simulationTime(*app_); }

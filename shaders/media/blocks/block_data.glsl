@@ -8,6 +8,7 @@ struct BlockTile {
                         // y: 1 when the tile has one texel per view pixel, on the pixel grid;
                         // z, w: the block's first item in impostorItems and its item count (0: none listed)
     vec4 lampSlices;    // x: 1 when the lamps' slices hold the block's particles one by one, not its light impostor
+    vec4 reproject[3];  // an earlier frame's tile read through this view: rows x, y, w of NDC → texels; [0].w 1 when so
 };
 
 layout(std430, binding = MEDIA_IMPOSTOR_ITEMS_BINDING) readonly buffer ImpostorItems { uvec2 impostorItems[]; };  // (particle, block)
@@ -31,8 +32,13 @@ float blockKernelReach(float meanRadius) { return (1.0 - 0.57735027) * meanRadiu
 // grid needs none: each pixel reads its own texel.
 const float kEdgeBand = 1.5;
 
-// Where a view NDC position falls in a tile, in atlas texels.
+// Where a view NDC position falls in a tile, in atlas texels (through the view the tile was
+// rendered for, when it is an earlier frame's: planning/block_reuse.h).
 vec2 tileTexel(BlockTile tile, vec2 ndc) {
+    if (tile.reproject[0].w > 0.5) {
+        vec3 p = vec3(ndc, 1.0);
+        return vec2(dot(tile.reproject[0].xyz, p), dot(tile.reproject[1].xyz, p)) / dot(tile.reproject[2].xyz, p);
+    }
     vec2 local = (ndc - tile.rect.xy) / (tile.rect.zw - tile.rect.xy);
     return tile.atlas.xy + local * tile.atlas.zw;
 }

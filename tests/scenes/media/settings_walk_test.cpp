@@ -6,7 +6,9 @@
 //
 // The frames are of a wing through a cloud, which shows every key's effect but those whose
 // declaration says they need more of a scene (SettingSpec::showsWith: a lamp inside the medium);
-// those may show it in a second scene that has a lamp inside its medium.
+// those may show it in a second scene that has a lamp inside its medium. A key that shows only
+// after the camera moves (kShowsWithMovingCamera) is judged on a second frame, drawn after one
+// through the camera turned half a degree.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -14,6 +16,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "media_test_support.h"
 #include "nimbus/base/error.h"
@@ -89,7 +93,8 @@ protected:
         assets::RgbImage image;
     };
     // With `sessionOnly`, a session that is not refused is not rendered either (an empty image).
-    Outcome render(const WalkScene& scene, const std::vector<std::string>& settings, bool sessionOnly = false) {
+    // With `moving`, the frame follows one through the camera turned by half a degree.
+    Outcome render(const WalkScene& scene, const std::vector<std::string>& settings, bool sessionOnly = false, bool moving = false) {
         sandbox::SessionOptions options;
         options.settings = settings;
         Outcome out;
@@ -97,6 +102,14 @@ protected:
             auto session = std::make_unique<sandbox::Session>(scene.scene, options);
             if (sessionOnly) return out;
             if (previous_) session->adoptRenderers(*previous_);  // the programs compiled once
+            if (moving) {
+                ecs::World& world = session->app().world();
+                glm::dmat4& camera = world.get<scene::Transform>(nodeEntity(world, "main")).world;
+                const glm::dmat4 start = camera;
+                camera = glm::rotate(glm::dmat4(1.0), glm::radians(0.5), glm::dvec3(0.0, 1.0, 0.0)) * start;
+                (void)session->renderRealtime(kWidth, kHeight);
+                camera = start;
+            }
             out.image = session->renderRealtime(kWidth, kHeight);
             previous_ = std::move(session);
         } catch (const InputError& e) {
@@ -120,7 +133,7 @@ TEST_P(SettingsWalk, EveryKeyInEveryTierChangesTheFrameOrIsRefused) {
     const std::string& mode = GetParam();
     for (const std::string& tier : qualitySpec->words) {
         const std::vector<std::string> base = {"mode=" + mode, "quality=" + tier};
-        std::vector<assets::RgbImage> baselines;
+        std::vector<assets::RgbImage> baselines, movingBaselines;  // the latter made when a key first needs them
         for (const WalkScene& scene : scenes) {
             const Outcome b = render(scene, base);
             ASSERT_FALSE(b.refused) << b.reason;
@@ -135,12 +148,15 @@ TEST_P(SettingsWalk, EveryKeyInEveryTierChangesTheFrameOrIsRefused) {
             int refusals = 0, tries = 0;
             bool changed = false;
             std::string reason;
+            const bool moving = spec.showsWith == kShowsWithMovingCamera;
+            if (moving && movingBaselines.empty())
+                for (const WalkScene& scene : scenes) movingBaselines.push_back(render(scene, base, false, true).image);
             for (const std::string& value : candidates(spec)) {
                 std::vector<std::string> settings = base;
                 settings.push_back(spec.key + "=" + value);
                 const std::size_t shownIn = spec.showsWith.empty() ? 1 : scenes.size();
                 for (std::size_t s = 0; s < shownIn && !changed; ++s) {
-                    const Outcome o = render(scenes[s], settings, refusals > 0);
+                    const Outcome o = render(scenes[s], settings, refusals > 0, moving);
                     ++tries;
                     if (o.refused) {
                         ++refusals;
@@ -149,7 +165,7 @@ TEST_P(SettingsWalk, EveryKeyInEveryTierChangesTheFrameOrIsRefused) {
                         EXPECT_NE(reason.find("no effect"), std::string::npos) << spec.key << "=" << value << ": " << reason;
                         EXPECT_NE(reason.find(spec.key), std::string::npos) << reason;
                     } else {
-                        changed = !sameImage(o.image, baselines[s]);
+                        changed = !sameImage(o.image, moving ? movingBaselines[s] : baselines[s]);
                     }
                 }
                 if (changed) break;

@@ -48,7 +48,8 @@ TEST_F(MediaGpuLayout, BlockTilesMatchGpuBlockTile) {
                    {"atlas", offsetof(GpuBlockTile, atlas)},
                    {"centreRadius", offsetof(GpuBlockTile, centreRadius)},
                    {"instance", offsetof(GpuBlockTile, instance)},
-                   {"lampSlices", offsetof(GpuBlockTile, lampSlices)}});
+                   {"lampSlices", offsetof(GpuBlockTile, lampSlices)},
+                   {"reproject[0]", offsetof(GpuBlockTile, reproject)}});
     EXPECT_EQ(topLevelArrayStride(program.id(), "blockTiles[0].rect"), static_cast<GLint>(sizeof(GpuBlockTile)));
     EXPECT_EQ(storageBinding(program.id(), "BlockTiles"), static_cast<GLint>(kBlockTilesBinding));
 }

@@ -89,16 +89,18 @@ std::vector<BlockCompositePass::Draw> BlockCompositePass::edgeDraws(const std::v
     return draws;
 }
 
-// The blocks whose light is read from their impostor texels have it shaded there first.
+// The blocks whose light is read from their impostor texels have it shaded there first, unless an
+// earlier frame's is read again.
 gpu::ResourceHandle BlockCompositePass::addLighting(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs,
-                                                    const BlockImpostorAtlas& atlas, const BlockGpuBuffers& blocks,
+                                                    const CameraImpostors& impostors, const BlockGpuBuffers& blocks,
                                                     const ParticleGpuBuffer& particles) {
     std::vector<BlockImpostorLightingPass::Run> lit;
     for (const Run& run : runs)
         if (run.build & kBlockLitImpostor) lit.push_back({run.ranks, (run.build & kBlockOwnParticles) != 0});
     if (lit.empty()) return {};
+    if (impostors.lit.reused.valid()) return impostors.lit.reused;
     if (!lighting_) lighting_ = std::make_unique<BlockImpostorLightingPass>();
-    return lighting_->add(graph, context, atlas, std::move(lit), blocks, particles);
+    return lighting_->add(graph, context, impostors.atlas, std::move(lit), blocks, particles, impostors.lit.keep);
 }
 
 std::vector<BlockCompositePass::Draw> BlockCompositePass::planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam,
@@ -120,16 +122,16 @@ std::vector<BlockCompositePass::Draw> BlockCompositePass::planDraws(const std::v
     return draws;
 }
 
-gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& made,
+gpu::ResourceHandle BlockCompositePass::add(gpu::FrameGraph& graph, GraphFrame& context, const CameraImpostors& impostors,
                                             const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
                                             bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                             const MediaTarget& target) {
     const int w = target.size.x, h = target.size.y;
     const std::vector<Run> runs = buildRuns(backToFront, builds);
     const int seamCell = seamMaskCell(target.size);
-    const Seam seam = addSeamPasses(graph, context, runs, seamOnly, blocks, made, target, seamCell);
+    const Seam seam = addSeamPasses(graph, context, runs, seamOnly, blocks, impostors.atlas, target, seamCell);
     const std::vector<Draw> draws = planDraws(runs, seamOnly, seam.mask.valid(), context.host.lights, context.multiple);
-    frame_ = {.atlas = made, .lit = addLighting(graph, context, runs, made, blocks, particles), .runs = runs};
+    frame_ = {.atlas = impostors.atlas, .lit = addLighting(graph, context, runs, impostors, blocks, particles), .runs = runs};
     const auto& data = graph.addPass<Inputs>(
         "media_blocks",
         [&](gpu::PassBuilder& builder, Inputs& d) {

@@ -20,6 +20,12 @@
 
 namespace nimbus::media {
 
+// The camera's impostor atlas and where its light comes from.
+struct CameraImpostors {
+    BlockImpostorAtlas atlas;
+    LitAtlasSource lit;
+};
+
 // Camera: impostors into an atlas, then blocks composited back to front into the media target.
 // The composite program (block_composite.*) for a BlockCompositeBuild.
 gpu::ProgramDesc blockCompositeDesc(std::uint8_t build);
@@ -31,7 +37,7 @@ public:
     // `seamOnly` (block_shading=seam): the BLOCK_EXACT_SHADING blocks are shaded exactly only near the
     // texels where a mesh lies among the particles of the blocks a mesh comes near (BlockSeamMaskPass),
     // and smoothly elsewhere, blended over a mask cell (block_seam.glsl seamWeight).
-    gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& atlas,
+    gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const CameraImpostors& impostors,
                                const std::vector<std::uint32_t>& backToFront, const std::vector<std::uint8_t>& builds,
                                bool seamOnly, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
                                const MediaTarget& target);
@@ -74,7 +80,7 @@ private:
     Seam addSeamPasses(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs, bool seamOnly,
                        const BlockGpuBuffers& blocks, const BlockImpostorAtlas& atlas, const MediaTarget& target, int cell);
     gpu::ResourceHandle addLighting(gpu::FrameGraph& graph, GraphFrame& context, const std::vector<Run>& runs,
-                                    const BlockImpostorAtlas& atlas, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles);
+                                    const CameraImpostors& impostors, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles);
     std::vector<Draw> planDraws(const std::vector<Run>& runs, bool seamOnly, bool seam, const std::vector<Light>& lights, bool multiple);
 
     std::unique_ptr<LocalLightPrograms> programs_[16];  // by BlockCompositeBuild bits

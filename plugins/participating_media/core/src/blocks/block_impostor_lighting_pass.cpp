@@ -25,7 +25,8 @@ LocalLightPrograms& BlockImpostorLightingPass::programs(bool ownParticles) {
 }
 
 gpu::ResourceHandle BlockImpostorLightingPass::add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& atlas,
-                                                   std::vector<Run> runs, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles) {
+                                                   std::vector<Run> runs, const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles,
+                                                   const gpu::Texture* keep) {
     struct Lighting : LitMediaInputs {
         BlockImpostorReads atlas;
     };
@@ -33,10 +34,11 @@ gpu::ResourceHandle BlockImpostorLightingPass::add(gpu::FrameGraph& graph, Graph
     for (const Run& run : runs) draws.emplace_back(run, &programs(run.ownParticles).forLights(context.host.lights, context.multiple));
     // Two by two atlas texels to a lit texel (block_data.glsl litTile).
     const glm::ivec2 size = (atlas.size + (kTileAlignment - 1)) / kTileAlignment;
+    const gpu::ResourceHandle kept = keep != nullptr ? graph.importTexture("block_impostor_lit", *keep) : gpu::ResourceHandle{};
     const auto& data = graph.addPass<Lighting>(
         "block_impostor_lighting",
         [&](gpu::PassBuilder& builder, Lighting& d) {
-            d.media = builder.create("block_impostor_lit", {GL_TEXTURE_2D, GL_RGBA32F, size.x, size.y, 1, 1});
+            d.media = kept.valid() ? builder.write(kept) : builder.create("block_impostor_lit", {GL_TEXTURE_2D, GL_RGBA32F, size.x, size.y, 1, 1});
             readLitMediaInputs(builder, context, d);
             d.atlas = readBlockImpostors(builder, atlas);
         },

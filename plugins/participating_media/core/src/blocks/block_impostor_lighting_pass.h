@@ -19,6 +19,14 @@
 
 namespace nimbus::media {
 
+// Where the composite's lit atlas comes from: shaded this frame, into `keep` when set (a texture the
+// technique keeps for later frames, blocks/block_impostor_cache.h) or else a transient one; or an
+// earlier frame's read again (`reused` valid), with no lighting pass.
+struct LitAtlasSource {
+    const gpu::Texture* keep = nullptr;
+    gpu::ResourceHandle reused;
+};
+
 // Its program (block_impostor_lighting.*), for blocks with lumps the slices do not resolve or not.
 gpu::ProgramDesc blockImpostorLightingDesc(bool ownParticles);
 
@@ -31,9 +39,9 @@ public:
         bool ownParticles;
     };
     // The lit atlas: RGBA32F of half the atlas's size, premultiplied radiance and opacity; texels
-    // of other blocks' tiles are left unwritten.
+    // of other blocks' tiles are left unwritten. Written into `keep` when given.
     gpu::ResourceHandle add(gpu::FrameGraph& graph, GraphFrame& context, const BlockImpostorAtlas& atlas, std::vector<Run> runs,
-                            const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles);
+                            const BlockGpuBuffers& blocks, const ParticleGpuBuffer& particles, const gpu::Texture* keep);
 
 private:
     LocalLightPrograms& programs(bool ownParticles);  // compiled when first asked for

@@ -16,12 +16,20 @@ void bindBlockImpostors(const gpu::PassResources& resources, const BlockImpostor
 }
 
 BlockImpostorAtlas addBlockImpostorPass(gpu::FrameGraph& graph, const BlockViewPlan& plan, const BlockGpuBuffers& blocks,
-                                        const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors) {
+                                        const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors,
+                                        const BlockImpostorAtlas* into) {
     const glm::ivec2 atlas = plan.atlasSize;
     return graph.addPass<BlockImpostorAtlas>(
         "block_impostors",
         [&](gpu::PassBuilder& builder, BlockImpostorAtlas& d) {
             d.size = atlas;
+            if (into != nullptr) {
+                d.depths = builder.write(into->depths);
+                d.sums1 = builder.write(into->sums1);
+                d.sums2 = builder.write(into->sums2);
+                d.moments = builder.write(into->moments);
+                return;
+            }
             d.depths = builder.create("block_impostor_depths", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
             d.sums1 = builder.create("block_impostor_sums1", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});
             d.sums2 = builder.create("block_impostor_sums2", {GL_TEXTURE_2D, GL_RGBA32F, atlas.x, atlas.y, 1, 1});

@@ -20,8 +20,10 @@ struct BlockImpostorReads {
 BlockImpostorReads readBlockImpostors(gpu::PassBuilder& builder, const BlockImpostorAtlas& atlas);
 void bindBlockImpostors(const gpu::PassResources& resources, const BlockImpostorReads& reads);
 
-// Adds the `block_impostors` pass: the camera's plan (tile set 0 of `blocks`) rendered into a new atlas.
+// Adds the `block_impostors` pass: the camera's plan (tile set 0 of `blocks`) rendered into a new
+// atlas, or into `into` (imported textures of the plan's size that later frames read again).
 BlockImpostorAtlas addBlockImpostorPass(gpu::FrameGraph& graph, const BlockViewPlan& plan, const BlockGpuBuffers& blocks,
-                                        const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors);
+                                        const ParticleGpuBuffer& particles, const BlockImpostorRenderer& impostors,
+                                        const BlockImpostorAtlas* into = nullptr);
 
 }  // namespace nimbus::media

@@ -12,11 +12,17 @@ BlockSlicePass::BlockSlicePass() {
     program_ = gpu::compileProgram({.vertex = "media/blocks/block_slices.vert", .fragment = "media/blocks/block_slices.frag"});
 }
 
-gpu::ResourceHandle BlockSlicePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views,
-                                        const std::vector<BlockViewPlan>& plans, const BlockLightImpostors& impostors, int resolution,
-                                        const BlockGpuBuffers& blocks) {
+gpu::TextureDesc BlockSlicePass::sliceDesc(const std::vector<SliceView>& views, int resolution) {
     int layers = 0;
-    for (std::size_t i = 0; i < views.size(); ++i) layers = std::max(layers, views[i].firstLayer + (views[i].slices + 3) / 4);
+    for (const SliceView& v : views) layers = std::max(layers, v.firstLayer + (v.slices + 3) / 4);
+    return {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1};
+}
+
+gpu::ResourceHandle BlockSlicePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views,
+                                        const std::vector<BlockViewPlan>& plans, const BlockLightImpostors& impostors,
+                                        const gpu::TextureDesc& desc, const BlockGpuBuffers& blocks, const gpu::Texture* keep) {
+    const int resolution = desc.width;
+    const gpu::ResourceHandle kept = keep != nullptr ? graph.importTexture("light_slices", *keep) : gpu::ResourceHandle{};
     struct Data {
         gpu::ResourceHandle slices;
         std::vector<gpu::ResourceHandle> impostors, moments;
@@ -24,7 +30,7 @@ gpu::ResourceHandle BlockSlicePass::add(gpu::FrameGraph& graph, const std::vecto
     const auto& data = graph.addPass<Data>(
         "block_light_slices",
         [&](gpu::PassBuilder& builder, Data& d) {
-            d.slices = builder.create("light_slices", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1});
+            d.slices = kept.valid() ? builder.write(kept) : builder.create("light_slices", desc);
             for (gpu::ResourceHandle h : impostors.depths) d.impostors.push_back(builder.read(h));
             for (gpu::ResourceHandle h : impostors.moments) d.moments.push_back(builder.read(h));
         },

@@ -17,9 +17,13 @@ namespace nimbus::media {
 class BlockSlicePass {
 public:
     BlockSlicePass();
-    // Light view i's plan is tile set i + 1 of `blocks`.
+    // The slice array every view's layers fit in, `resolution` texels a side.
+    static gpu::TextureDesc sliceDesc(const std::vector<SliceView>& views, int resolution);
+    // Light view i's plan is tile set i + 1 of `blocks`. Into `keep` (of `desc`) when given: a
+    // texture later frames read again (blocks/block_impostor_cache.h).
     gpu::ResourceHandle add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, const std::vector<BlockViewPlan>& plans,
-                            const BlockLightImpostors& impostors, int resolution, const BlockGpuBuffers& blocks);
+                            const BlockLightImpostors& impostors, const gpu::TextureDesc& desc, const BlockGpuBuffers& blocks,
+                            const gpu::Texture* keep = nullptr);
 
 private:
     gpu::Program program_;

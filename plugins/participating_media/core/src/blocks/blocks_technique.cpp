@@ -6,6 +6,7 @@
 #include "blocks/block_composite_edges_pass.h"
 #include "blocks/block_composite_pass.h"
 #include "blocks/block_gpu_buffers.h"
+#include "blocks/block_impostor_cache.h"
 #include "blocks/block_impostor_pass.h"
 #include "blocks/block_impostor_renderer.h"
 #include "blocks/block_lamp_slice_pass.h"
@@ -56,6 +57,18 @@ const SettingField<BlocksSettings> kBlocksFields[] = {
      &setChoice<&BlocksSettings::lighting>,
      // An instance's tile is the prototype's, lit where the prototype stands.
      [](const BlocksSettings& s) { return !s.instancing; }},
+    {{.key = "impostor_reuse",
+      .help = "read the camera's block impostors and their light again in later frames while every block's direction from the "
+              "eye turns by at most this many degrees, its size on screen changes by at most 10% and nothing but the camera "
+              "moved or changed (0: render them every frame)",
+      .type = SettingType::Number,
+      .min = 0.0,
+      .max = 10.0,
+      .defaultValue = "0 (balanced and fast: 2)",
+      .showsWith = kShowsWithMovingCamera},
+     &setNumber<&BlocksSettings::reuseDegrees>,
+     // An instance's tile is the prototype's, drawn every frame.
+     [](const BlocksSettings& s) { return !s.instancing; }},
 };
 
 // What blocks mode keeps for one frame: the partition and the impostor layouts, which the passes'
@@ -72,11 +85,16 @@ struct BlockFrame {
     std::vector<std::uint8_t> wideFromLamps;        // per block: the lamps' slices take its particles one by one
     std::vector<std::uint32_t> lampSliceParticles;  // those particles
     std::vector<std::uint8_t> builds;               // per block: the composite variant (kBlockExactCut, ...)
+    ReuseDecision reuse;                            // what this frame reads again from the cache
+    bool keep = false;                              // this frame renders what it does not reuse into the cache
 };
 
 class BlocksTechnique final : public MediaTechnique {
 public:
     bool readsOccluders() const override { return true; }
+    void forgetFrames() override {
+        if (cache_) cache_->forget();
+    }
 
     // This frame's partition and which blocks the lamps' slices take one by one.
     void plan(TechniqueFrame& frame, const GraphFrame& context) override {
@@ -139,10 +157,15 @@ public:
             const std::vector<std::uint8_t> none;
             frame_.lightPlans.push_back(planFor(view, context.host.camera.origin, view.perspective ? frame_.wideFromLamps : none));
         }
+        if (frame_.reuse.light) {  // impostor_reuse: nothing the light slices hold has changed
+            context.slices = graph.importTexture("light_slices", cache_->slices());
+            return;
+        }
         if (!impostors_) impostors_ = std::make_unique<BlockImpostorRenderer>();
         if (!slicePass_) slicePass_ = std::make_unique<BlockSlicePass>();
         const BlockLightImpostors light = addBlockLightImpostorPass(graph, frame_.lightPlans, *buffers_, *shared.buffer, *impostors_);
-        context.slices = slicePass_->add(graph, views, frame_.lightPlans, light, shared.sliceResolution, *buffers_);
+        const gpu::TextureDesc slices = BlockSlicePass::sliceDesc(views, shared.sliceResolution);
+        context.slices = slicePass_->add(graph, views, frame_.lightPlans, light, slices, *buffers_, frame_.keep ? &cache_->keepSlices(slices) : nullptr);
         const bool lampViews = std::any_of(views.begin(), views.end(), [](const SliceView& v) { return v.view.perspective; });
         if (lampViews && !frame_.lampSliceParticles.empty()) {
             if (!lampSlicePass_) lampSlicePass_ = std::make_unique<BlockLampSlicePass>();
@@ -154,11 +177,20 @@ public:
         if (!impostors_) impostors_ = std::make_unique<BlockImpostorRenderer>();
         if (!compositePass_) compositePass_ = std::make_unique<BlockCompositePass>();
         const SharedFrame& shared = *frame.shared;
-        const BlockImpostorAtlas atlas = addBlockImpostorPass(graph, frame_.cameraPlan, *buffers_, *shared.buffer, *impostors_);
+        BlockImpostorAtlas atlas;
+        LitAtlasSource lit;
+        if (frame_.reuse.camera == ReuseVerdict::Reused) {
+            atlas = cache_->importAtlas(graph);
+            lit.reused = graph.importTexture("block_impostor_lit", cache_->litTexture());
+        } else {
+            const BlockImpostorAtlas kept = frame_.keep ? cache_->importAtlas(graph) : BlockImpostorAtlas{};
+            atlas = addBlockImpostorPass(graph, frame_.cameraPlan, *buffers_, *shared.buffer, *impostors_, frame_.keep ? &kept : nullptr);
+            if (frame_.keep) lit.keep = &cache_->litTexture();
+        }
         edgeRect_ = frame.settings->upsampleOnly ? glm::ivec4(0)
                                                  : meshEdgeRect(context.host.occluders, *frame.particles, context.host.camera, shared.target.size);
-        return compositePass_->add(graph, context, atlas, frame_.backToFront, frame_.builds, own_.blockShading == BlockShading::Seam,
-                                   *buffers_, *shared.buffer, shared.target);
+        return compositePass_->add(graph, context, {atlas, lit}, frame_.backToFront, frame_.builds,
+                                   own_.blockShading == BlockShading::Seam, *buffers_, *shared.buffer, shared.target);
     }
 
     // Mixed resolution where a mesh enters the particles: the blocks composited again there.
@@ -175,6 +207,7 @@ private:
     }
 
     void planCamera(TechniqueFrame& frame, const GraphFrame& context);
+    void planReuse(TechniqueFrame& frame, const GraphFrame& context);
     void sortBackToFront(const gpu::View& v);
 
     BlocksSettings own_;
@@ -184,6 +217,7 @@ private:
     std::unique_ptr<BlockCompositePass> compositePass_;
     std::unique_ptr<BlockSlicePass> slicePass_;
     std::unique_ptr<BlockLampSlicePass> lampSlicePass_;
+    std::unique_ptr<BlockImpostorCache> cache_;  // impostor_reuse: made when first on
     glm::ivec4 edgeRect_{0};  // this frame's, as addMedia planned it
 };
 
@@ -238,6 +272,37 @@ void BlocksTechnique::planCamera(TechniqueFrame& frame, const GraphFrame& contex
     }
     frame.report("texel_lit_blocks", static_cast<long long>(litBlocks));
     frame.report("exactly_shaded_blocks", static_cast<long long>(exactlyShaded));
+    planReuse(frame, context);
+}
+
+// impostor_reuse: read the cache's atlas again through this view, or render this frame's into it.
+// Off, instanced, with a volume or with meshes the host does not box, every frame renders its own.
+void BlocksTechnique::planReuse(TechniqueFrame& frame, const GraphFrame& context) {
+    frame_.reuse = {};
+    frame_.keep = false;
+    if (!(own_.reuseDegrees > 0.0f) || frame_.instanced || !frame.volumes->empty() || !context.host.occludersComplete) {
+        if (cache_) cache_->forget();
+        return;
+    }
+    if (!cache_) cache_ = std::make_unique<BlockImpostorCache>();
+    const gpu::View& v = context.host.camera;
+    ImpostorSources sources{.particles = *frame.particles,
+                            .lights = context.host.lights,
+                            .occluders = context.host.occluders,
+                            .ambient = context.host.ambient,
+                            .multiple = context.multiple,
+                            .target = frame.shared->target.size,
+                            .shared = *frame.settings,
+                            .own = own_};
+    const WorldView view{.origin = v.origin,
+                         .viewProjection = glm::dmat4(v.viewProjection),
+                         .forward = v.forward,
+                         .perspective = !v.orthographic,
+                         .znear = v.znear};
+    frame_.reuse = cache_->decide(std::move(sources), frame_.builds, frame_.partition, view, {.degrees = own_.reuseDegrees}, frame_.cameraPlan);
+    frame_.keep = true;
+    frame.report("impostors_reused", frame_.reuse.camera == ReuseVerdict::Reused);
+    frame.report("light_slices_reused", frame_.reuse.light);
 }
 
 // The automatic block count and counts around it, impostor resolution, slices, instancing, media
@@ -264,6 +329,7 @@ std::vector<BenchRow> blockBenchRows(const ParticleSet& particles, const std::ve
 BlocksSettings BlocksSettings::forTier(QualityTier tier) {
     BlocksSettings s;
     if (tier != QualityTier::Exact) s.lighting = BlockLighting::Texel;
+    if (tier != QualityTier::Exact) s.reuseDegrees = 2.0f;
     // At fast's reduced resolution the exact seam bought no band error (docs/design-notes.md).
     if (tier == QualityTier::Fast) s.blockShading = BlockShading::Smooth;
     return s;

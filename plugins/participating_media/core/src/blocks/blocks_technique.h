@@ -31,6 +31,9 @@ struct BlocksSettings {
     bool instancing = false;     // one block prototype instanced at every block (the paper's b + N/b)
     BlockShading blockShading = BlockShading::Seam;
     BlockLighting lighting = BlockLighting::Pixel;
+    // impostor_reuse: the most degrees any block's direction from the eye may turn while the
+    // camera's impostors are read again (planning/block_reuse.h); 0: rendered every frame.
+    float reuseDegrees = 0.0f;
 
     static BlocksSettings forTier(QualityTier tier);
 };

@@ -42,6 +42,10 @@ bool MediaRenderer::readsOccluders() const {
     return technique_ != nullptr && (technique_->readsOccluders() || techniques_.at(settings_.mode).multipleScattering);
 }
 
+void MediaRenderer::forgetFrames() {
+    for (auto& [name, technique] : made_) technique->forgetFrames();
+}
+
 // A mode that does not draw volumes refuses a frame with one rather than leave it out of the picture.
 void MediaRenderer::refuseVolumes(const TechniqueEntry& entry, const Volume& volume) const {
     std::string drawing;

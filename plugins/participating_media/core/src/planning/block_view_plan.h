@@ -20,6 +20,9 @@ struct alignas(16) GpuBlockTile {
                              // whose particles are not in the item list)
     glm::vec4 lampSlices{0.0f};  // x: 1 when the lamps' slices hold the block's particles one by one
                                  // (blocksSeenWideFromLamps), not its light impostor; yzw free
+    // A tile of an earlier frame read through this view (block_reuse.h): rows x, y and w (xyz) of
+    // the map from this view's NDC (x, y, 1) to the tile's atlas texels; [0].w is 1 when it applies.
+    glm::vec4 reproject[3]{};
 };
 
 // One view's impostor layout: where every block's tile is, and how big the atlas is.

@@ -68,6 +68,9 @@ public:
     Aabb bounds() const;
     // Whether this frame's technique reads HostFrame::occluders; a host may skip them otherwise.
     bool readsOccluders() const;
+    // The next frame is drawn as if it were the first: nothing kept from earlier frames is read
+    // again (a renderer handed to another scene or session; MediaTechnique::forgetFrames).
+    void forgetFrames();
 
     // In a host's frame graph (graph_frame.h): the light slices before the opaque pass, the medium after it.
     void addLightSlices(gpu::FrameGraph& graph, GraphFrame& frame);

@@ -74,6 +74,9 @@ public:
     virtual gpu::ResourceHandle addEdges(gpu::FrameGraph&, GraphFrame&, TechniqueFrame&, const EdgeTarget&) { return {}; }
     // Whether this frame reads HostFrame::occluders; a host may skip them otherwise.
     virtual bool readsOccluders() const { return false; }
+    // Drops whatever earlier frames left for later ones to read again (blocks' impostor_reuse), so
+    // the next frame is drawn as if it were the first.
+    virtual void forgetFrames() {}
 };
 
 // A configuration `sandbox bench` sweeps: its row name and the settings it sets.
