@@ -38,20 +38,21 @@ void fit(gpu::Texture& texture, const gpu::TextureDesc& desc) {
 }  // namespace
 
 bool sameSources(const ImpostorSources& a, const ImpostorSources& b) {
-    return sameParticles(a.particles, b.particles) &&
-           std::equal(a.lights.begin(), a.lights.end(), b.lights.begin(), b.lights.end(), sameLight) &&
+    return std::equal(a.lights.begin(), a.lights.end(), b.lights.begin(), b.lights.end(), sameLight) &&
            std::equal(a.occluders.begin(), a.occluders.end(), b.occluders.begin(), b.occluders.end(), sameBox) &&
            a.ambient == b.ambient && a.multiple == b.multiple && a.target == b.target && sharedFields(a.shared) == sharedFields(b.shared) &&
            ownFields(a.own) == ownFields(b.own);
 }
 
-ReuseDecision BlockImpostorCache::decide(ImpostorSources sources, const std::vector<std::uint8_t>& builds, const BlockPartition& partition,
-                                         const WorldView& view, const ImpostorReuseLimits& limits, BlockViewPlan& plan) {
+ReuseDecision BlockImpostorCache::decide(const ParticleSet& particles, ImpostorSources sources, const std::vector<std::uint8_t>& builds,
+                                         const BlockPartition& partition, const WorldView& view, const ImpostorReuseLimits& limits,
+                                         BlockViewPlan& plan) {
     ReuseDecision decision;
-    const bool same = sourcesKept_ && sameSources(sources, sources_);
+    const bool same = sourcesKept_ && sameSources(sources, sources_) && sameParticles(particles, particles_);
     decision.light = same && lightKept_;
     if (same && cameraKept_ && builds == builds_) decision.camera = reuseCameraTiles(partition, plan_, view_, view, limits, plan);
     if (!same) {
+        particles_ = particles;
         sources_ = std::move(sources);
         sourcesKept_ = true;
         lightKept_ = false;

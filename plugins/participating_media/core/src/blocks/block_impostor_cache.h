@@ -23,9 +23,9 @@
 
 namespace nimbus::media {
 
-// Everything but the camera that the camera's atlas and its light are rendered from.
+// Everything but the camera and the particles that the camera's atlas and its light are rendered
+// from (the particles are compared where they stand, and copied only when they change).
 struct ImpostorSources {
-    ParticleSet particles;
     std::vector<Light> lights;
     std::vector<OccluderBox> occluders;
     glm::vec3 ambient{0.0f};
@@ -48,8 +48,8 @@ public:
     // camera's atlas is reused, `plan` is rewritten to read it (reuseCameraTiles); otherwise this
     // frame renders it for `plan` into the kept textures. Light slices not reused are to be
     // rendered into keepSlices's.
-    ReuseDecision decide(ImpostorSources sources, const std::vector<std::uint8_t>& builds, const BlockPartition& partition,
-                         const WorldView& view, const ImpostorReuseLimits& limits, BlockViewPlan& plan);
+    ReuseDecision decide(const ParticleSet& particles, ImpostorSources sources, const std::vector<std::uint8_t>& builds,
+                         const BlockPartition& partition, const WorldView& view, const ImpostorReuseLimits& limits, BlockViewPlan& plan);
     void forget() { sourcesKept_ = cameraKept_ = lightKept_ = false; }
 
     // The kept atlas in `graph`: to be written this frame or read again.
@@ -62,6 +62,7 @@ public:
 
 private:
     bool sourcesKept_ = false, cameraKept_ = false, lightKept_ = false;
+    ParticleSet particles_;
     ImpostorSources sources_;
     std::vector<std::uint8_t> builds_;
     BlockViewPlan plan_;

@@ -286,8 +286,7 @@ void BlocksTechnique::planReuse(TechniqueFrame& frame, const GraphFrame& context
     }
     if (!cache_) cache_ = std::make_unique<BlockImpostorCache>();
     const gpu::View& v = context.host.camera;
-    ImpostorSources sources{.particles = *frame.particles,
-                            .lights = context.host.lights,
+    ImpostorSources sources{.lights = context.host.lights,
                             .occluders = context.host.occluders,
                             .ambient = context.host.ambient,
                             .multiple = context.multiple,
@@ -299,7 +298,7 @@ void BlocksTechnique::planReuse(TechniqueFrame& frame, const GraphFrame& context
                          .forward = v.forward,
                          .perspective = !v.orthographic,
                          .znear = v.znear};
-    frame_.reuse = cache_->decide(std::move(sources), frame_.builds, frame_.partition, view, {.degrees = own_.reuseDegrees}, frame_.cameraPlan);
+    frame_.reuse = cache_->decide(*frame.particles, std::move(sources), frame_.builds, frame_.partition, view, {.degrees = own_.reuseDegrees}, frame_.cameraPlan);
     frame_.keep = true;
     frame.report("impostors_reused", frame_.reuse.camera == ReuseVerdict::Reused);
     frame.report("light_slices_reused", frame_.reuse.light);

@@ -120,9 +120,10 @@ const char* reuseVerdictName(ReuseVerdict verdict) {
 
 ReuseVerdict reuseCameraTiles(const BlockPartition& partition, const BlockViewPlan& then, const WorldView& thenView,
                               const WorldView& nowView, const ImpostorReuseLimits& limits, BlockViewPlan& now) {
-    if (!(limits.degrees > 0.0) || then.tiles.size() != partition.blocks.size() || now.tiles.size() != partition.blocks.size() ||
+    if (then.tiles.size() != partition.blocks.size() || now.tiles.size() != partition.blocks.size() ||
         thenView.perspective != nowView.perspective)
-        return ReuseVerdict::Turned;
+        return ReuseVerdict::Changed;  // planned for another partition or projection
+    if (!(limits.degrees > 0.0)) return ReuseVerdict::Turned;  // any turn is too far
     // The same view plans the same tiles (`now` is `then`): read them as they are, to the bit.
     if (thenView.origin == nowView.origin && thenView.viewProjection == nowView.viewProjection) return ReuseVerdict::Reused;
     for (std::size_t b = 0; b < partition.blocks.size(); ++b) {

@@ -33,7 +33,8 @@ struct ImpostorReuseLimits {
     double scale = 1.1;
 };
 
-// Reused, or the first reason found not to (Changed: the caller's sources differ, or none is kept).
+// Reused, or the first reason found not to (Changed: the caller's sources differ, none is kept, or
+// the tiles were planned for another partition or projection).
 enum class ReuseVerdict { Reused, Changed, Turned, Scaled, Uncovered, NearPlane };
 const char* reuseVerdictName(ReuseVerdict verdict);
 
