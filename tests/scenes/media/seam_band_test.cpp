@@ -58,7 +58,8 @@ enum { kExact, kHard, kBalanced, kFast, kBlocksBalanced, kBlocksFast };
 
 // Today's levels, the same assertions on every scene: soft particles cut the kernel at the mesh
 // (exact under half the hard-clipped error), balanced and blocks within a factor of exact, fast
-// under a fixed band error. Prints the three ratios beside them.
+// under a fixed band error, and blocks in fast under particles in fast (the issue's: the seam
+// handling blocks exist for, at fast-tier cost). Prints the three ratios beside them.
 struct Levels {
     double balancedOverExact, blocksOverExact, fastBand;
 };
@@ -72,13 +73,14 @@ void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
     EXPECT_LE(e[kBalanced].band, levels.balancedOverExact * e[kExact].band);
     EXPECT_LE(e[kBlocksBalanced].band, levels.blocksOverExact * e[kExact].band);
     EXPECT_LE(e[kFast].band, levels.fastBand);
+    EXPECT_LT(e[kBlocksFast].band, e[kFast].band) << "blocks in fast err less in the band than particles in fast";
 }
 
 // Measured at 320x180 (single scattering), band of 2166 pixels: exact 0.54 %, hard-clipped 2.62 %,
 // balanced 0.85 % (1.61 % before balanced took the sun's mesh visibility per fragment on the
 // particles a mesh crosses), fast 2.87 % (4.26 % before its splats were drawn again at full
-// resolution at the reduced target's edges near the wing), blocks 0.86 % / 2.96 % (4.23 % before
-// its edges were drawn again). Fast at full
+// resolution at the reduced target's edges near the wing), blocks 0.86 % / 2.43 % (4.23 % before
+// its edges were drawn again, 2.96 % before blocks in fast took 32 slices at balanced's detail). Fast at full
 // resolution errs 2.29 %: the rest is its per-particle fit and coarser slices, not yet the
 // issue's 1.5x exact. The bounds below hold today's levels.
 TEST_F(SeamBand, WingThroughCloud) {
@@ -87,7 +89,7 @@ TEST_F(SeamBand, WingThroughCloud) {
 
 // Measured at 320x180, band of 1184 pixels: exact 0.79 %, hard-clipped 2.49 %, balanced 0.95 %
 // (0.98 % before), fast 3.17 % (5.56 % before the edges; 2.65 % at full resolution), blocks
-// 1.39 % / 3.35 % (5.33 % before, as on the wing).
+// 1.39 % / 2.30 % (5.33 % before the edges, 3.35 % before the finer slices, as on the wing).
 TEST_F(SeamBand, CumulusAircraft) {
     expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.balancedOverExact = 1.3, .blocksOverExact = 2.0, .fastBand = 0.04});
 }
@@ -95,10 +97,11 @@ TEST_F(SeamBand, CumulusAircraft) {
 // Mixed resolution (fast tier, media_scale auto at ¼ here): the medium drawn again at full
 // resolution at the reduced image's edges near the wing takes the band most of the way to the
 // full-resolution frame's error, in every mode that redraws edges. Measured: particles 2.87 % with
-// it, 4.26 % without, 2.29 % at full resolution; raymarch 2.92 %, 4.26 %, 2.40 %; blocks 2.96 %,
-// 4.44 %, 1.97 % (its full-resolution frame is the best of the three).
+// it, 4.26 % without, 2.29 % at full resolution; raymarch 2.92 %, 4.26 %, 2.40 %; blocks 2.43 %,
+// 4.11 %, 1.37 % (with fast's finer slices for blocks its full-resolution frame is the best of the
+// three by far, so the redraw comes less close to it).
 TEST_F(SeamBand, MixedResolutionRedrawsTheEdgesNearTheWing) {
-    const std::vector<std::pair<const char*, double>> modes{{"mode=particles", 1.35}, {"mode=raymarch", 1.35}, {"mode=blocks", 1.6}};
+    const std::vector<std::pair<const char*, double>> modes{{"mode=particles", 1.35}, {"mode=raymarch", 1.35}, {"mode=blocks", 1.9}};
     for (const auto& [mode, nearFull] : modes) {
         const std::vector<BandErrors> e =
             measure(mediaScene("wing_through_cloud"),

@@ -22,7 +22,8 @@ bool sameParticles(const ParticleSet& a, const ParticleSet& b) {
 
 // Every shared setting but the mode's own (compared as BlocksSettings).
 auto sharedFields(const MediaRenderSettings& s) {
-    return std::tie(s.mode, s.slices, s.sliceResolution, s.sliceTexelsPerRadius, s.sliceDeposit, s.mediaScale, s.mediaScaleAuto,
+    return std::tie(s.mode, s.slices, s.sliceResolution, s.sliceTexelsPerRadius, s.slicesNearMeshes, s.sliceTexelsPerRadiusNearMeshes,
+                    s.sliceDeposit, s.mediaScale, s.mediaScaleAuto,
                     s.upsampleThreshold, s.upsampleOnly, s.scatteringVoxels, s.scatteringSweeps);
 }
 

@@ -339,6 +339,15 @@ TechniqueEntry blocksTechnique() {
             .help = "impostors of particle blocks composited back to front, cut where a mesh reaches them",
             .edges = true,
             .settings = specsOf(kBlocksFields),
+            // Where a mesh reaches into the medium, fast keeps balanced's slice detail and twice fast's
+            // slices: the light the mesh cuts there is most of the seam band's error, and blocks
+            // afford it (docs/design-notes.md).
+            .sharedDefaults =
+                [](MediaRenderSettings& s, QualityTier tier) {
+                    if (tier != QualityTier::Fast) return;
+                    s.slicesNearMeshes = 32;
+                    s.sliceTexelsPerRadiusNearMeshes = 4.0f;
+                },
             .read = readerOf(kBlocksFields),
             .idle = idleOf(kBlocksFields),
             .create = [] { return std::make_unique<BlocksTechnique>(); },

@@ -45,7 +45,7 @@ struct SharedField {
 // In the order they apply: slice_resolution before slice_detail.
 const SharedField kSharedFields[] = {
     {{{.key = "slices", .help = "light slices per light view", .type = SettingType::Integer, .min = 4, .max = 32,
-       .defaultValue = "chosen from the medium (fast: 16)"},
+       .defaultValue = "chosen from the medium (fast: 16; blocks in fast where a mesh reaches into the medium: 32)"},
       &setInteger<&MediaRenderSettings::slices>},
      Acts::LitBySlices},
     {{{.key = "slice_resolution",
@@ -58,7 +58,7 @@ const SharedField kSharedFields[] = {
       &setSliceResolution},
      Acts::LitBySlices},
     {{{.key = "slice_detail", .help = "slice texels across the median particle's radius",
-       .type = SettingType::Number, .min = 0.25, .max = 16.0, .defaultValue = "3 (balanced: 4, fast: 2)",
+       .type = SettingType::Number, .min = 0.25, .max = 16.0, .defaultValue = "3 (balanced: 4, fast: 2; blocks in fast where a mesh reaches into the medium: 4)",
        .actsWhen = "with slice_resolution=auto"},
       &setSliceDetail, &sliceResolutionAuto},
      Acts::LitBySlices},
@@ -119,6 +119,13 @@ MediaRenderSettings sharedForTier(QualityTier tier) {
     return s;
 }
 
+// The tier's shared settings as mode `entry` takes them.
+MediaRenderSettings sharedForTier(QualityTier tier, const TechniqueEntry& entry) {
+    MediaRenderSettings s = sharedForTier(tier);
+    if (entry.sharedDefaults) entry.sharedDefaults(s, tier);
+    return s;
+}
+
 SettingSpec modeSpec(const TechniqueTable& techniques) {
     SettingSpec spec{.key = "mode", .help = "how the medium is drawn:", .type = SettingType::Choice};
     for (const TechniqueEntry& e : techniques.entries()) {
@@ -142,8 +149,8 @@ MediaRenderSettings withDefaults(MediaRenderSettings s) {
 
 MediaRenderSettings mediaSettingsForTier(QualityTier tier, const TechniqueTable& techniques, const std::string& mode) {
     const Settings none;
-    MediaRenderSettings s = sharedForTier(tier);
     const TechniqueEntry& entry = techniques.at(mode);
+    MediaRenderSettings s = sharedForTier(tier, entry);
     s.mode = entry.name;
     s.technique = entry.read(none, tier);
     return s;
@@ -170,10 +177,12 @@ void declareMediaSettings(Settings& settings, const TechniqueTable& techniques) 
 MediaRenderSettings readMediaSettings(const Settings& settings, const TechniqueTable& techniques) {
     settings.validate();  // every key set is checked, whichever mode reads it
     const QualityTier tier = readQualityTier(settings);
-    MediaRenderSettings s = sharedForTier(tier);
+    const TechniqueEntry& entry = techniques.at(settings.text("mode").value_or(""), settings.origin("mode"));
+    MediaRenderSettings s = sharedForTier(tier, entry);
     for (const SharedField& shared : kSharedFields)
         if (const auto value = settings.read(shared.field.spec.key)) shared.field.apply(s, *value);
-    const TechniqueEntry& entry = techniques.at(settings.text("mode").value_or(""), settings.origin("mode"));
+    if (settings.has("slices")) s.slicesNearMeshes = 0;
+    if (settings.has("slice_detail") || settings.has("slice_resolution")) s.sliceTexelsPerRadiusNearMeshes = 0.0f;
     s.mode = entry.name;
     s.technique = entry.read(settings, tier);
     return s;

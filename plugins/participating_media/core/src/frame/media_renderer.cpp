@@ -23,6 +23,16 @@ constexpr float kNegligibleRescatter = 0.01f;  // planScattering
 // its particles subtend tens of degrees, and campfire's lamp faces wanted 12 texels where the sun
 // wanted 48 (docs/design-notes.md).
 constexpr int kMinLampSliceResolution = 16;
+
+// Whether a mesh's box meets the medium's bounds (the axis-aligned box around it): where a mesh may
+// reach into the medium, and a mode's slices near meshes apply.
+bool meshReachesInto(const std::vector<OccluderBox>& occluders, const Aabb& bounds) {
+    if (bounds.empty()) return false;
+    return std::any_of(occluders.begin(), occluders.end(), [&](const OccluderBox& box) {
+        const glm::dvec3 half = axisAlignedHalf(box);
+        return glm::all(glm::lessThanEqual(box.centre - half, bounds.max)) && glm::all(glm::greaterThanEqual(box.centre + half, bounds.min));
+    });
+}
 }  // namespace
 
 double MediaFrameStats::value(const std::string& key, double fallback) const {
@@ -154,8 +164,13 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
 // slices' resolution. `perLight`: (first view, count) per light, count 0 where it has none.
 void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::ivec2>& perLight) {
     SharedFrame& shared = *shared_;
+    const bool nearMeshes = meshReachesInto(context.host.occluders, shared.bounds);
+    const int fixedSlices = nearMeshes && settings_.slicesNearMeshes > 0 ? settings_.slicesNearMeshes : settings_.slices;
+    const float detail = nearMeshes && settings_.sliceTexelsPerRadius > 0.0f && settings_.sliceTexelsPerRadiusNearMeshes > 0.0f
+                             ? settings_.sliceTexelsPerRadiusNearMeshes
+                             : settings_.sliceTexelsPerRadius;
     int layers = 0, resolution = settings_.sliceResolution;
-    if (settings_.sliceTexelsPerRadius > 0.0f) resolution = 0;  // automatic: the largest any view needs
+    if (detail > 0.0f) resolution = 0;  // automatic: the largest any view needs
     const glm::dvec3 origin = context.host.camera.origin;
     perLight.assign(context.host.lights.size(), glm::ivec2(0));
     for (std::size_t i = 0; i < context.host.lights.size(); ++i) {
@@ -168,13 +183,13 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
         perLight[i] = glm::ivec2(static_cast<int>(shared.sliceViews.size()), static_cast<int>(lightViews.size()));
         for (auto view : lightViews) {
             const SliceEstimate estimate = estimateSlices(*particles_, *volumes_, view, origin);
-            const int slices = settings_.slices > 0 ? std::clamp(settings_.slices, kMinSlices, kMaxSlices) : estimate.slices;
+            const int slices = fixedSlices > 0 ? std::clamp(fixedSlices, kMinSlices, kMaxSlices) : estimate.slices;
             view.depthNear = static_cast<float>(estimate.depthNear);
             view.depthFar = static_cast<float>(estimate.depthFar);
             int own = 0;  // the array's
-            if (settings_.sliceTexelsPerRadius > 0.0f) {
-                resolution = std::max(resolution, sliceResolutionFor(estimate, view, settings_.sliceTexelsPerRadius));
-                if (view.perspective) own = sliceResolutionFor(estimate, view, settings_.sliceTexelsPerRadius, kMinLampSliceResolution);
+            if (detail > 0.0f) {
+                resolution = std::max(resolution, sliceResolutionFor(estimate, view, detail));
+                if (view.perspective) own = sliceResolutionFor(estimate, view, detail, kMinLampSliceResolution);
             }
             shared.sliceViews.push_back({view, glm::vec3(light.position - origin), slices, layers, own});
             layers += (slices + 3) / 4;

@@ -26,6 +26,12 @@ struct MediaRenderSettings {
     int sliceResolution = 0;   // texels per side of a slice; 0: 256
     float sliceTexelsPerRadius = 0.0f;  // > 0: the resolution instead puts this many texels across the
                                         // median particle's radius (slice_plan.h sliceResolutionFor)
+    // Where a mesh reaches into the medium (a mesh's box meets the particles' bounds): the slices and
+    // slice detail instead of the two above; 0: the same. A mode's tier may set them (blocks in
+    // fast: there the light a mesh cuts in the medium is its seam's error); `slices`, `slice_detail`
+    // or `slice_resolution` set explicitly clear them.
+    int slicesNearMeshes = 0;
+    float sliceTexelsPerRadiusNearMeshes = 0.0f;
     // Slices as one float per particle and slab, then a running sum (the same values as the exact
     // pass within float rounding); auto: unless a lamp's views are among them.
     SliceDeposit sliceDeposit = SliceDeposit::Off;

@@ -95,6 +95,9 @@ struct TechniqueEntry {
     bool edges = false;              // may draw a reduced image's edges again (addEdges): mixed_resolution acts in it
     bool drawsOver = false;          // its full-resolution passes honour MediaTarget::over (blend over the host's output)
     std::vector<SettingSpec> settings;  // its own keys (the table sets their `modes` to this name)
+    // Its own tier defaults for shared keys, over the tier's and under any key that was set (the
+    // shared keys' help says them). Null: the tier's.
+    std::function<void(MediaRenderSettings&, QualityTier)> sharedDefaults;
     // Its typed settings for `tier` with every one of its keys that was set applied.
     std::function<std::any(const Settings&, QualityTier)> read;
     // Its keys that do not act with its settings as `read` gave them (SettingField::acts, e.g. a
