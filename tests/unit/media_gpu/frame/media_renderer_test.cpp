@@ -73,6 +73,28 @@ TEST(ParticlesNearMeshes, ATiltedThinBoxReachesOnlyTheSpheresWithinReach) {
     EXPECT_EQ(particlesNearMeshes({}, particles, 1.0), (std::vector<std::uint8_t>{0, 0}));
 }
 
+// A mesh box's axis-aligned hull decides: a box beside the medium's does not reach into it, one
+// whose hull meets it does, even a tilted plate that itself passes the medium by (a cheap test that
+// may err towards finer slices, never towards missing a mesh).
+TEST(MeshReachesInto, TheMeshBoxsHullMeetsTheMediumsBounds) {
+    const Aabb medium{glm::dvec3(-1.0), glm::dvec3(1.0)};
+    OccluderBox beside;
+    beside.centre = {3.0, 0.0, 0.0};
+    beside.half = {1.5, 0.5, 0.5};
+    EXPECT_FALSE(meshReachesInto({beside}, medium)) << "its near face lies 0.5 m off the box";
+    beside.half.x = 2.0;
+    EXPECT_TRUE(meshReachesInto({beside}, medium)) << "its near face touches the box";
+    const double c = std::sqrt(0.5);
+    OccluderBox plate;  // 4 × 0.02 × 4 m rolled 45° about z, centred 2.2 m up: its hull reaches y = 0.79, it y = 1.2 at x = −1
+    plate.centre = {0.0, 2.2, 0.0};
+    plate.axis[0] = {c, c, 0.0};
+    plate.axis[1] = {-c, c, 0.0};
+    plate.half = {2.0, 0.01, 2.0};
+    EXPECT_TRUE(meshReachesInto({beside, plate}, medium));
+    EXPECT_FALSE(meshReachesInto({}, medium));
+    EXPECT_FALSE(meshReachesInto({plate}, Aabb{})) << "no medium";
+}
+
 // A unit cube whose nearest face lies `gap` metres right of `p` (along +x).
 OccluderBox cubeRightOf(const glm::dvec3& p, double gap) {
     OccluderBox box;

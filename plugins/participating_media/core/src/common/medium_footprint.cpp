@@ -204,6 +204,14 @@ bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& li
     return false;
 }
 
+bool meshReachesInto(const std::vector<OccluderBox>& meshes, const Aabb& bounds) {
+    if (bounds.empty()) return false;
+    return std::any_of(meshes.begin(), meshes.end(), [&](const OccluderBox& box) {
+        const glm::dvec3 half = axisAlignedHalf(box);
+        return glm::all(glm::lessThanEqual(box.centre - half, bounds.max)) && glm::all(glm::greaterThanEqual(box.centre + half, bounds.min));
+    });
+}
+
 std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach) {
     std::vector<std::uint8_t> near(particles.size(), 0);
     const Aabb bounds = particleBounds(particles);

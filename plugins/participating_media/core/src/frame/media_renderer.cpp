@@ -23,16 +23,6 @@ constexpr float kNegligibleRescatter = 0.01f;  // planScattering
 // its particles subtend tens of degrees, and campfire's lamp faces wanted 12 texels where the sun
 // wanted 48 (docs/design-notes.md).
 constexpr int kMinLampSliceResolution = 16;
-
-// Whether a mesh's box meets the medium's bounds (the axis-aligned box around it): where a mesh may
-// reach into the medium, and a mode's slices near meshes apply.
-bool meshReachesInto(const std::vector<OccluderBox>& occluders, const Aabb& bounds) {
-    if (bounds.empty()) return false;
-    return std::any_of(occluders.begin(), occluders.end(), [&](const OccluderBox& box) {
-        const glm::dvec3 half = axisAlignedHalf(box);
-        return glm::all(glm::lessThanEqual(box.centre - half, bounds.max)) && glm::all(glm::greaterThanEqual(box.centre + half, bounds.min));
-    });
-}
 }  // namespace
 
 double MediaFrameStats::value(const std::string& key, double fallback) const {

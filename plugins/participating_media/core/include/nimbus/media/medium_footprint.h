@@ -70,6 +70,10 @@ bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds);
 inline constexpr double kLampMediumColumn = 0.1;
 bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& lights);
 
+// Whether some mesh's box meets `bounds` (the medium's), taken as the axis-aligned box around it:
+// where a mesh may reach into the medium (MediaRenderSettings::slicesNearMeshes).
+bool meshReachesInto(const std::vector<OccluderBox>& meshes, const Aabb& bounds);
+
 // Per particle (1/0): whether some mesh's box (HostFrame::occluders) comes within `reach` radii of
 // its centre (reach 1: into its sphere).
 std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach);
