@@ -327,7 +327,8 @@ TEST(SandboxSettings, ListsEverySettingWithWhereItActs) {
     const ProcessResult r = sandbox({"settings"});
     ASSERT_EQ(r.exitCode, 0) << explain(r);
     for (const char* key : {"quality", "mode", "lighting", "slice_deposit", "media_scale", "shadow_map_size", "in mode blocks",
-                            "tier exact", "(fast: 16)", "particles, blocks, raymarch, sheets or billboards"})
+                            "tier exact", "(fast: 16; blocks in fast where a mesh reaches into the medium: 32)",
+                            "particles, blocks, raymarch, sheets or billboards"})
         EXPECT_NE(r.out.find(key), std::string::npos) << key << " missing from:\n" << r.out;
 }
 
