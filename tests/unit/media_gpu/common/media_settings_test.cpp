@@ -48,6 +48,8 @@ TEST(MediaSettings, AKeySetExplicitlyWinsNearMeshesToo) {
     const MediaRenderSettings fixed = readWith({"mode=blocks", "quality=fast", "slice_resolution=64"});
     EXPECT_EQ(fixed.sliceTexelsPerRadius, 0.0f);
     EXPECT_EQ(fixed.sliceTexelsPerRadiusNearMeshes, 0.0f);
+    // auto is fast's own resolution: the detail near meshes stays.
+    EXPECT_FLOAT_EQ(readWith({"mode=blocks", "quality=fast", "slice_resolution=auto"}).sliceTexelsPerRadiusNearMeshes, 4.0f);
 }
 
 }  // namespace

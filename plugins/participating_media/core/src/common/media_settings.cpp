@@ -14,6 +14,12 @@ void setMediaScale(MediaRenderSettings& s, const SettingValue& v) {
     if (!s.mediaScaleAuto) s.mediaScale = static_cast<float>(v.number);
 }
 
+// A slice count or detail set explicitly holds near meshes too (MediaRenderSettings::slicesNearMeshes).
+void setSlices(MediaRenderSettings& s, const SettingValue& v) {
+    s.slices = static_cast<int>(v.integer);
+    s.slicesNearMeshes = 0;
+}
+
 // auto puts slice_detail texels (3 unless the tier or slice_detail says) across the median radius.
 void setSliceResolution(MediaRenderSettings& s, const SettingValue& v) {
     if (v.isWord("auto")) {
@@ -22,11 +28,13 @@ void setSliceResolution(MediaRenderSettings& s, const SettingValue& v) {
         return;
     }
     s.sliceResolution = static_cast<int>(v.integer);
-    s.sliceTexelsPerRadius = 0.0f;
+    s.sliceTexelsPerRadius = s.sliceTexelsPerRadiusNearMeshes = 0.0f;
 }
 
 void setSliceDetail(MediaRenderSettings& s, const SettingValue& v) {
-    if (s.sliceTexelsPerRadius > 0.0f) s.sliceTexelsPerRadius = static_cast<float>(v.number);
+    if (!(s.sliceTexelsPerRadius > 0.0f)) return;
+    s.sliceTexelsPerRadius = static_cast<float>(v.number);
+    s.sliceTexelsPerRadiusNearMeshes = 0.0f;
 }
 
 bool sliceResolutionAuto(const MediaRenderSettings& s) { return s.sliceTexelsPerRadius > 0.0f; }
@@ -46,7 +54,7 @@ struct SharedField {
 const SharedField kSharedFields[] = {
     {{{.key = "slices", .help = "light slices per light view", .type = SettingType::Integer, .min = 4, .max = 32,
        .defaultValue = "chosen from the medium (fast: 16; blocks in fast where a mesh reaches into the medium: 32)"},
-      &setInteger<&MediaRenderSettings::slices>},
+      &setSlices},
      Acts::LitBySlices},
     {{{.key = "slice_resolution",
        .help = "texels per side of a light slice; auto chooses it from the particles' size as the light sees them (slice_detail)",
@@ -58,7 +66,8 @@ const SharedField kSharedFields[] = {
       &setSliceResolution},
      Acts::LitBySlices},
     {{{.key = "slice_detail", .help = "slice texels across the median particle's radius",
-       .type = SettingType::Number, .min = 0.25, .max = 16.0, .defaultValue = "3 (balanced: 4, fast: 2; blocks in fast where a mesh reaches into the medium: 4)",
+       .type = SettingType::Number, .min = 0.25, .max = 16.0,
+       .defaultValue = "3 (balanced: 4, fast: 2; blocks in fast where a mesh reaches into the medium: 4)",
        .actsWhen = "with slice_resolution=auto"},
       &setSliceDetail, &sliceResolutionAuto},
      Acts::LitBySlices},
@@ -181,8 +190,6 @@ MediaRenderSettings readMediaSettings(const Settings& settings, const TechniqueT
     MediaRenderSettings s = sharedForTier(tier, entry);
     for (const SharedField& shared : kSharedFields)
         if (const auto value = settings.read(shared.field.spec.key)) shared.field.apply(s, *value);
-    if (settings.has("slices")) s.slicesNearMeshes = 0;
-    if (settings.has("slice_detail") || settings.has("slice_resolution")) s.sliceTexelsPerRadiusNearMeshes = 0.0f;
     s.mode = entry.name;
     s.technique = entry.read(settings, tier);
     return s;

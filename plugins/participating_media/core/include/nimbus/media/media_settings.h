@@ -29,7 +29,7 @@ struct MediaRenderSettings {
     // Where a mesh reaches into the medium (a mesh's box meets the particles' bounds): the slices and
     // slice detail instead of the two above; 0: the same. A mode's tier may set them (blocks in
     // fast: there the light a mesh cuts in the medium is its seam's error); `slices`, `slice_detail`
-    // or `slice_resolution` set explicitly clear them.
+    // or a fixed `slice_resolution` set explicitly clears its own.
     int slicesNearMeshes = 0;
     float sliceTexelsPerRadiusNearMeshes = 0.0f;
     // Slices as one float per particle and slab, then a running sum (the same values as the exact
