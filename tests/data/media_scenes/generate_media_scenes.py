@@ -13,6 +13,7 @@ absorber     albedo 0, no emission, no ambient, white background (absorber_test.
 moving_shadow  a uniform slab of particles under a box that the test moves (moving_shadow_test.cpp).
 shadow_edge  one large particle half under a plate (shadow_edge_test.cpp).
 wing_through_cloud  a thin wing through a cloud's middle (seam_band_test.cpp).
+wing_close   the same seen from a third as far, so media_scale=auto reduces at 96x54 (settings_walk_test.cpp).
 colour_pairs  pairs of differently coloured particles whose depth order flips as the camera orbits (sheets_test.cpp).
 """
 import math
@@ -320,6 +321,14 @@ def wing_through_cloud():
                        {"albedo": (0.95, 0.95, 0.95), "g": 0.5}, sun((0.25, -0.85, -0.45)), SKY, extra=wing)
 
 
+def wing_close():
+    """wing_through_cloud seen from a third as far: its billboards keep 8 texels across at 1/2 even at
+    96x54, so media_scale=auto reduces the media target there (settings_walk_test.cpp)."""
+    wing = thin_box("wing", (0.75, 0.75, 0.78), (0.0, 2.0, 0.2), (0, 0, 0.0523360, 0.9986295), (6.0, 0.04, 1.3))
+    return cloud_scene("cloud", 116, 3.0, (0.5, 2.47, 2.83), (0, 2, 0), 260, (0, 2, 0), (2.6, 1.3, 1.8), (0.45, 0.95),
+                       {"albedo": (0.95, 0.95, 0.95), "g": 0.5}, sun((0.25, -0.85, -0.45)), SKY, extra=wing)
+
+
 # Shared with moving_shadow_test.cpp: the slab of particles and the box's two positions.
 SLAB_MIN, SLAB_MAX, SLAB_SPACING, SLAB_RADIUS = (-3.0, 1.5, -1.0), (3.0, 2.5, 1.0), 0.25, 0.4
 
@@ -403,6 +412,7 @@ SCENES = {
     "unseen_mesh_through_medium": unseen_mesh_through_medium,
     "unseen_far_from_origin": unseen_far_from_origin,
     "wing_through_cloud": wing_through_cloud,
+    "wing_close": wing_close,
     "absorber": absorber,
     "moving_shadow": moving_shadow,
     "shadow_edge": shadow_edge,

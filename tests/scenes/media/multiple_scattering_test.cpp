@@ -121,7 +121,9 @@ INSTANTIATE_TEST_SUITE_P(
     Content, MultipleVsJudge,
     ::testing::Values(
         MultipleCase{"cumulus", 0.0, "particles", "balanced", 0.029, 0.28},  // 2.3 %, single 10.4 %
-        MultipleCase{"cumulus", 0.0, "particles", "fast", 0.053, 0.5},  // 4.3 %, single 11.0 %
+        // 2.3 %, single 10.4 %. At 96x54 fast's billboards are too small for a reduced media
+        // target, which gave 4.3 % when media_scale=auto still took ½ for them.
+        MultipleCase{"cumulus", 0.0, "particles", "fast", 0.029, 0.28},
         MultipleCase{"cumulus", 0.0, "raymarch", "balanced", 0.027, 0.0},  // 2.2 %
         MultipleCase{"cumulus", 0.0, "blocks", "balanced", 0.028, 0.0},  // 2.2 %
         MultipleCase{"cumulus", 0.0, "sheets", "balanced", 0.031, 0.0},  // 2.4 %

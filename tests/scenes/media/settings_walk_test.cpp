@@ -5,8 +5,9 @@
 // later is walked too; a mode added later fails EveryDeclaredModeIsWalked until it is listed.
 //
 // The frames are of a wing through a cloud, which shows every key's effect but those whose
-// declaration says they need more of a scene (SettingSpec::showsWith: a lamp inside the medium);
-// those may show it in a second scene that has a lamp inside its medium. A key that shows only
+// declaration says they need more of a scene (SettingSpec::showsWith: a lamp inside the medium, a
+// reduced media target); those may show it in the other scenes: a lamp inside a medium, and a
+// wing seen close, whose billboards are large enough for media_scale=auto to reduce. A key that shows only
 // after the camera moves (kShowsWithMovingCamera) is judged on a second frame, drawn after one
 // through the camera turned half a degree.
 #include <gtest/gtest.h>
@@ -36,10 +37,12 @@ struct WalkScene {
 };
 
 std::vector<WalkScene> walkScenes() {
-    // A wing through a cloud (soft particles, block seams, upsampling edges, multiple scattering),
-    // and a lamp inside a medium (exact_near_lamps, lamp slices).
+    // A wing through a cloud (soft particles, block seams, multiple scattering), a lamp inside a
+    // medium (exact_near_lamps, lamp slices), and a wing seen from close enough that
+    // media_scale=auto reduces the target at this size (the upsampling keys).
     return {{"cumulus_aircraft", std::make_shared<const assets::Scene>(assets::loadScene(contentScene("cumulus_aircraft")))},
-            {"unseen_point_inside_dense", std::make_shared<const assets::Scene>(assets::loadScene(mediaScene("unseen_point_inside_dense")))}};
+            {"unseen_point_inside_dense", std::make_shared<const assets::Scene>(assets::loadScene(mediaScene("unseen_point_inside_dense")))},
+            {"wing_close", std::make_shared<const assets::Scene>(assets::loadScene(mediaScene("wing_close")))}};
 }
 
 // The declarations a session makes (what `sandbox settings` lists).

@@ -52,9 +52,15 @@ TEST(AutomaticMediaScale, FullResolutionUnlessFillDominates) {
 }
 
 TEST(AutomaticMediaScale, KeepsEightTexelsAcrossATypicalBillboard) {
-    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 8.0}, false), 0.5f) << "never above ½";
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 16.0}, false), 0.5f) << "never above ½";
     EXPECT_FLOAT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 24.0}, false), 1.0f / 3.0f);
     EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 400.0}, false), 0.25f) << "never below ¼";
+}
+
+TEST(AutomaticMediaScale, BillboardsThatHalfWouldBlurStayAtFullResolution) {
+    // Half size 15.9 px keeps 7.95 texels at ½, under the 8 a reduced target must keep.
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 15.9}, false), 1.0f);
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 2.0}, false), 1.0f) << "a small image of a dense cloud";
 }
 
 TEST(ParticlesNearMeshes, ATiltedThinBoxReachesOnlyTheSpheresWithinReach) {

@@ -8,6 +8,10 @@
 namespace nimbus::media {
 namespace {
 
+// Where media_scale=auto keeps full resolution (small billboards, thin cover) the upsampling keys
+// change nothing: their effect needs a frame whose media target is reduced.
+constexpr char kShowsWithReducedTarget[] = "a reduced media target (media_scale below 1, or auto where the billboards keep 8 texels at 1/2)";
+
 // The media target's resolution: a number clears auto, auto keeps what the tier gave.
 void setMediaScale(MediaRenderSettings& s, const SettingValue& v) {
     s.mediaScaleAuto = v.isWord("auto");
@@ -81,7 +85,7 @@ const SharedField kSharedFields[] = {
      Acts::SliceDeposit},
     {{{.key = "media_scale",
        .help = "resolution of the media pass relative to the frame; auto: where the particles cover the image more than 2.5 "
-               "times over, 1/4 to 1/2 keeping 8 texels across a typical billboard",
+               "times over, 1/4 to 1/2 keeping 8 texels across a typical billboard (1 where even 1/2 would not)",
        .type = SettingType::Number,
        .min = 0.0625,
        .max = 1.0,
@@ -93,14 +97,14 @@ const SharedField kSharedFields[] = {
        .help = "offscreen media: relative depth difference the upsampling treats as an edge (where a mesh reaches into the "
                "medium, the modes of mixed_resolution draw the medium there again at full resolution)",
        .type = SettingType::Number, .min = 1e-4, .max = 10.0, .defaultValue = "0.2",
-       .actsWhen = "with media_scale below 1 or auto"},
+       .actsWhen = "with media_scale below 1 or auto", .showsWith = kShowsWithReducedTarget},
       &setNumber<&MediaRenderSettings::upsampleThreshold>, &offscreenMedia},
      Acts::Everywhere},
     {{{.key = "mixed_resolution",
        .help = "with media_scale below 1: draw the medium again at full resolution at the reduced image's edges where a mesh "
                "enters it (off: upsampled there too, and a thin mesh shows a seam; faster)",
        .type = SettingType::Boolean, .defaultValue = "on",
-       .actsWhen = "with media_scale below 1 or auto"},
+       .actsWhen = "with media_scale below 1 or auto", .showsWith = kShowsWithReducedTarget},
       &setMixedResolution, &offscreenMedia},
      Acts::Edges},
     {{{.key = "scattering_voxels", .help = "multiple scattering: voxels of the grid its scattered light diffuses on, along the medium's longest side",

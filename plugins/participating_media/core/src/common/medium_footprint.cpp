@@ -181,7 +181,10 @@ glm::ivec4 meshEdgeRect(const std::vector<OccluderBox>& meshes, const ParticleSe
 float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles) {
     // A lamp among the particles lights a peak a few pixels wide, which a lower resolution blurs away.
     if (footprint.coverage <= kHalfScaleCoverage || lampAmongParticles) return 1.0f;
-    return static_cast<float>(std::clamp(kAutoScaleRadiusTexels / footprint.radiusPixels, 0.25, 0.5));
+    // Billboards too small to keep kAutoScaleRadiusTexels at ½ would lose their detail to any
+    // reduction (a few texels each, on small images): they stay at full resolution.
+    const double keeps = kAutoScaleRadiusTexels / footprint.radiusPixels;
+    return keeps > 0.5 ? 1.0f : static_cast<float>(std::max(keeps, 0.25));
 }
 
 bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds) {

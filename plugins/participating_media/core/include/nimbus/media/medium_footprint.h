@@ -54,7 +54,8 @@ glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b);
 // media_scale=auto: 1 unless the billboards cover the image more than kHalfScaleCoverage times
 // over (fill dominates) and no lamp lies among them; then as low as keeps kAutoScaleRadiusTexels
 // across a typical billboard's half size, within [¼, ½]. The kernel is smooth over a billboard,
-// so the depth-aware upsampling loses next to nothing there (docs/design-notes.md).
+// so the depth-aware upsampling loses next to nothing there (docs/design-notes.md). Billboards
+// that ½ would leave with fewer texels stay at full resolution: a reduced target blurs them away.
 float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles);
 inline constexpr double kHalfScaleCoverage = 2.5;
 inline constexpr double kAutoScaleRadiusTexels = 8.0;
