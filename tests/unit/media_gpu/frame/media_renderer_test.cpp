@@ -63,6 +63,15 @@ TEST(AutomaticMediaScale, BillboardsThatHalfWouldBlurStayAtFullResolution) {
     EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 2.0}, false), 1.0f) << "a small image of a dense cloud";
 }
 
+TEST(AutomaticImpostorScale, KeepsSixTexelsAcrossATypicalBillboardInEighths) {
+    EXPECT_EQ(automaticImpostorScale(24.0), 0.25f) << "6 texels of 24 at exactly a quarter";
+    EXPECT_EQ(automaticImpostorScale(100.0), 0.25f) << "never below a quarter";
+    EXPECT_EQ(automaticImpostorScale(20.0), 0.375f) << "0.3 rounded up to eighths: never fewer than 6 texels";
+    EXPECT_EQ(automaticImpostorScale(12.0), 0.5f);
+    EXPECT_EQ(automaticImpostorScale(3.0), 0.5f) << "never above a half";
+    EXPECT_EQ(automaticImpostorScale(0.0), 0.5f) << "nothing drawn: the default";
+}
+
 TEST(ParticlesNearMeshes, ATiltedThinBoxReachesOnlyTheSpheresWithinReach) {
     ParticleSet particles;
     particles.push({0.0, 1.0, 0.0}, 0.5f, 1.0f, Medium{});  // 1 m above the box's plane

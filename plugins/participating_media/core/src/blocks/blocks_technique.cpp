@@ -25,6 +25,12 @@ namespace {
 
 constexpr int kMaxAtlasSize = 4096;
 
+// A number clears auto, auto keeps what the tier gave.
+void setImpostorScale(BlocksSettings& s, const SettingValue& v) {
+    s.impostorScaleAuto = v.isWord("auto");
+    if (!s.impostorScaleAuto) s.impostorScale = static_cast<float>(v.number);
+}
+
 const SettingField<BlocksSettings> kBlocksFields[] = {
     // At the most, each block's impostor keeps a 16x16 tile of the largest atlas.
     {{.key = "blocks",
@@ -34,9 +40,15 @@ const SettingField<BlocksSettings> kBlocksFields[] = {
       .max = (kMaxAtlasSize / 16) * (kMaxAtlasSize / 16),
       .defaultValue = "round(2 sqrt(particles)), more in optically thick media or around a lamp inside them"},
      &setInteger<&BlocksSettings::blocks>},
-    {{.key = "impostor_scale", .help = "impostor texels per covered pixel", .type = SettingType::Number, .min = 0.05, .max = 4.0,
-      .defaultValue = "0.5"},
-     &setNumber<&BlocksSettings::impostorScale>},
+    {{.key = "impostor_scale",
+      .help = "impostor texels per covered pixel; auto: as few as keep 6 texels across a typical billboard's half size, "
+              "1/4 to 1/2",
+      .type = SettingType::Number,
+      .min = 0.05,
+      .max = 4.0,
+      .words = {"auto"},
+      .defaultValue = "0.5 (balanced and fast: auto)"},
+     &setImpostorScale},
     {{.key = "instancing", .help = "build the cloud from one block prototype instanced at every block", .type = SettingType::Boolean,
       .defaultValue = "off"},
      &setBoolean<&BlocksSettings::instancing>},
@@ -99,6 +111,7 @@ public:
     // This frame's partition and which blocks the lamps' slices take one by one.
     void plan(TechniqueFrame& frame, const GraphFrame& context) override {
         own_ = techniqueSettings<BlocksSettings>(*frame.settings);
+        if (own_.impostorScaleAuto) own_.impostorScale = automaticImpostorScale(frame.shared->radiusTexels);
         if (own_.impostorScale <= 0.0f) own_.impostorScale = 0.5f;
         if (!buffers_) buffers_ = std::make_unique<BlockGpuBuffers>();
         const std::vector<glm::dvec3> lamps = lampPositions(context.host.lights);
@@ -117,6 +130,7 @@ public:
                                              frame_.partition.order.begin() + block.first + block.count);
         }
         frame.report("blocks", static_cast<long long>(frame_.partition.blocks.size()));
+        frame.report("impostor_scale", static_cast<double>(own_.impostorScale));
         frame.report("lamp_slice_particles", static_cast<long long>(frame_.lampSliceParticles.size()));
     }
 
@@ -329,6 +343,9 @@ BlocksSettings BlocksSettings::forTier(QualityTier tier) {
     BlocksSettings s;
     if (tier != QualityTier::Exact) s.lighting = BlockLighting::Texel;
     if (tier != QualityTier::Exact) s.reuseDegrees = 2.0f;
+    // A large billboard's kernel is smooth over many pixels: a quarter of the texels keep it
+    // (cumulus at 1280x720 moved by 0.18%, docs/design-notes.md).
+    if (tier != QualityTier::Exact) s.impostorScaleAuto = true;
     // At fast's reduced resolution the exact seam bought no band error (docs/design-notes.md).
     if (tier == QualityTier::Fast) s.blockShading = BlockShading::Smooth;
     return s;

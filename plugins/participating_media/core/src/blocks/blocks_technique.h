@@ -28,6 +28,7 @@ enum class BlockLighting : std::uint8_t {
 struct BlocksSettings {
     int blocks = 0;              // block count; 0: automatic (block_partition.h)
     float impostorScale = 0.0f;  // impostor texels per covered pixel; 0: 0.5
+    bool impostorScaleAuto = false;  // chosen each frame from the billboards' size (automaticImpostorScale)
     bool instancing = false;     // one block prototype instanced at every block (the paper's b + N/b)
     BlockShading blockShading = BlockShading::Seam;
     BlockLighting lighting = BlockLighting::Pixel;

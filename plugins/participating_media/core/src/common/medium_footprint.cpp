@@ -187,6 +187,12 @@ float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticl
     return keeps > 0.5 ? 1.0f : static_cast<float>(std::max(keeps, 0.25));
 }
 
+float automaticImpostorScale(double radiusTexels) {
+    if (!(radiusTexels > 0.0)) return 0.5f;
+    const double eighths = std::ceil(8.0 * kAutoImpostorRadiusTexels / radiusTexels - 1e-9);
+    return static_cast<float>(std::clamp(eighths, 2.0, 4.0) / 8.0);
+}
+
 bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds) {
     return std::any_of(lights.begin(), lights.end(), [&](const Light& l) {
         return l.kind != gpu::LightKind::Directional && bounds.contains(l.position);

@@ -39,6 +39,7 @@ struct SharedFrame {
     MediaTarget target;
     Aabb bounds;                        // the particle spheres' and the volumes', world space
     double coverage = 0.0;              // how many times over the billboards cover the image
+    double radiusTexels = 0.0;          // a typical billboard's half size in media target texels
     std::vector<SliceView> sliceViews;  // every light's, in GraphFrame::sliceViews order
     int sliceResolution = 0;            // texels per side of every slice
     EnvironmentGrid environment;        // multiple scattering: this frame's (empty: single)

@@ -107,6 +107,7 @@ void MediaRenderer::planTarget(const GraphFrame& context) {
     shared_->coverage = footprint.coverage;
     if (settings_.mediaScaleAuto) scale = automaticMediaScale(footprint, lampAmongParticles(context.host.lights, shared_->bounds));
     stats_.mediaScale = scale;
+    shared_->radiusTexels = footprint.radiusPixels * scale;
     MediaTarget& target = shared_->target;
     target = MediaTarget{};
     target.size = glm::max(glm::ivec2(glm::round(glm::vec2(v.width, v.height) * scale)), glm::ivec2(1));

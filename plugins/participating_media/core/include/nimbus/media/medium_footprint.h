@@ -59,6 +59,13 @@ glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b);
 float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles);
 inline constexpr double kHalfScaleCoverage = 2.5;
 inline constexpr double kAutoScaleRadiusTexels = 8.0;
+// impostor_scale=auto (blocks): as few impostor texels per media texel as keep
+// kAutoImpostorRadiusTexels across a typical billboard's half size (the kernel's s = R/3 then
+// spans two), within [¼, ½], rounded up to eighths so that a camera moving a little keeps the
+// scale and with it the impostors it may read again. `radiusTexels`: SharedFrame::radiusTexels.
+float automaticImpostorScale(double radiusTexels);
+inline constexpr double kAutoImpostorRadiusTexels = 6.0;
+
 // Below this many billboard pixels per particle, per-particle lighting takes one ray per particle:
 // a fit across them has nothing to follow (docs/design-notes.md).
 inline constexpr double kConstantSplatPixels = 2.0;
