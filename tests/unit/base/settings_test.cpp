@@ -14,6 +14,7 @@ namespace {
 struct Toy {
     int slices = 0;
     float scale = 0.0f;
+    bool scaleAuto = false;
     bool soft = true;
     enum class Shade : unsigned char { Seam, Smooth } shade = Shade::Seam;
 };
@@ -21,7 +22,7 @@ struct Toy {
 const SettingField<Toy> kToyFields[] = {
     {{.key = "slices", .help = "slices", .type = SettingType::Integer, .min = 4, .max = 32}, &setInteger<&Toy::slices>},
     {{.key = "scale", .help = "scale", .type = SettingType::Number, .min = 0.0625, .max = 1.0, .words = {"auto"}},
-     [](Toy& t, const SettingValue& v) { t.scale = v.isWord("auto") ? -1.0f : static_cast<float>(v.number); }},
+     &setNumberOrAuto<&Toy::scale, &Toy::scaleAuto>},
     {{.key = "soft", .help = "soft", .type = SettingType::Boolean, .tiers = kTierExact}, &setBoolean<&Toy::soft>},
     {{.key = "shade", .help = "shade", .type = SettingType::Choice, .words = {"seam", "smooth"}}, &setChoice<&Toy::shade>},
 };
@@ -51,7 +52,13 @@ TEST(Settings, ExplicitValuesApplyOnTopOfTheTiersStruct) {
     EXPECT_EQ(t.scale, 0.5f) << "unset keys keep the tier's value";
     EXPECT_EQ(t.shade, Toy::Shade::Smooth);
     s.set("scale", "auto");
-    EXPECT_EQ(readFields<Toy>(s, kToyFields, Toy{}).scale, -1.0f) << "a word reaches the applier";
+    const Toy automatic = readFields<Toy>(s, kToyFields, Toy{.scale = 0.5f});
+    EXPECT_TRUE(automatic.scaleAuto) << "a word reaches the applier";
+    EXPECT_EQ(automatic.scale, 0.5f) << "auto keeps the tier's number";
+    s.set("scale", "0.25");
+    const Toy number = readFields<Toy>(s, kToyFields, Toy{.scale = 0.5f, .scaleAuto = true});
+    EXPECT_FALSE(number.scaleAuto) << "a number clears auto";
+    EXPECT_EQ(number.scale, 0.25f);
 }
 
 TEST(Settings, ValuesOutsideTheSpecAreRefusedNamingOriginKeyAndRange) {

@@ -89,6 +89,12 @@ template <auto Member, class S>
 void setInteger(S& s, const SettingValue& v) { s.*Member = static_cast<int>(v.integer); }
 template <auto Member, class S>
 void setNumber(S& s, const SettingValue& v) { s.*Member = static_cast<float>(v.number); }
+// A number or the word "auto": a number clears Auto, "auto" sets it and keeps the number the tier gave.
+template <auto Member, auto Auto, class S>
+void setNumberOrAuto(S& s, const SettingValue& v) {
+    s.*Auto = v.isWord("auto");
+    if (!(s.*Auto)) s.*Member = static_cast<float>(v.number);
+}
 // The word's index as the member's enum: the spec's words must be in the enum's order.
 template <auto Member, class S>
 void setChoice(S& s, const SettingValue& v) {

@@ -25,12 +25,6 @@ namespace {
 
 constexpr int kMaxAtlasSize = 4096;
 
-// A number clears auto, auto keeps what the tier gave.
-void setImpostorScale(BlocksSettings& s, const SettingValue& v) {
-    s.impostorScaleAuto = v.isWord("auto");
-    if (!s.impostorScaleAuto) s.impostorScale = static_cast<float>(v.number);
-}
-
 const SettingField<BlocksSettings> kBlocksFields[] = {
     // At the most, each block's impostor keeps a 16x16 tile of the largest atlas.
     {{.key = "blocks",
@@ -48,7 +42,7 @@ const SettingField<BlocksSettings> kBlocksFields[] = {
       .max = 4.0,
       .words = {"auto"},
       .defaultValue = "0.5 (balanced and fast: auto)"},
-     &setImpostorScale},
+     &setNumberOrAuto<&BlocksSettings::impostorScale, &BlocksSettings::impostorScaleAuto>},
     {{.key = "instancing", .help = "build the cloud from one block prototype instanced at every block", .type = SettingType::Boolean,
       .defaultValue = "off"},
      &setBoolean<&BlocksSettings::instancing>},

@@ -12,12 +12,6 @@ namespace {
 // change nothing: their effect needs a frame whose media target is reduced.
 constexpr char kShowsWithReducedTarget[] = "a reduced media target (media_scale below 1, or auto where the billboards keep 8 texels at 1/2)";
 
-// The media target's resolution: a number clears auto, auto keeps what the tier gave.
-void setMediaScale(MediaRenderSettings& s, const SettingValue& v) {
-    s.mediaScaleAuto = v.isWord("auto");
-    if (!s.mediaScaleAuto) s.mediaScale = static_cast<float>(v.number);
-}
-
 // A slice count or detail set explicitly holds near meshes too (MediaRenderSettings::slicesNearMeshes).
 void setSlices(MediaRenderSettings& s, const SettingValue& v) {
     s.slices = static_cast<int>(v.integer);
@@ -91,7 +85,7 @@ const SharedField kSharedFields[] = {
        .max = 1.0,
        .words = {"auto"},
        .defaultValue = "1 (fast: auto)"},
-      &setMediaScale},
+      &setNumberOrAuto<&MediaRenderSettings::mediaScale, &MediaRenderSettings::mediaScaleAuto>},
      Acts::Everywhere},
     {{{.key = "upsample_threshold",
        .help = "offscreen media: relative depth difference the upsampling treats as an edge (where a mesh reaches into the "
