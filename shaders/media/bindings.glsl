@@ -23,6 +23,7 @@
 #define MEDIA_PACKED_SLICES_UNIT 0    // light_slice_pairs.frag: the slices as the slice passes wrote them
 #define MEDIA_HOST_DEPTH_UNIT 0       // a standard-Z host depth, re-encoded by media_host_depth
 #define MEDIA_DEPTH_USED_UNIT 0       // edge_stencil.frag: the depth each reduced media texel used
+#define MEDIA_REDUCED_MEDIA_UNIT 0    // seam_marks.frag: the reduced media target
 #define MEDIA_SHEET_UNIT 0            // sheets: one sheet's sums (sheet_composite.frag)
 #define MEDIA_ENVIRONMENT_UNIT 10     // multiple scattering: the environment grid (sampler3D)
 #define MEDIA_ENVIRONMENT_DIRECTIONAL_UNIT 12  // multiple scattering: the grid's P1 anisotropy (sampler3D)
@@ -46,3 +47,4 @@
 #define MEDIA_VOLUMES_BINDING 12
 #define MEDIA_SPLAT_FLAGS_BINDING 13  // per particle: the splats' variant bits (particle_lighting.comp MEDIA_SPLAT_FLAGS)
 #define MEDIA_SPLAT_RANKS_BINDING 14  // the draw ranks a splat draw takes (particle_splats.vert SPLAT_RANK_LIST)
+#define MEDIA_SEAM_PARTICLES_BINDING 15  // the particles a mesh enters (seam_marks.vert)

@@ -192,6 +192,11 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     const gpu::Program edges = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/upsample/edge_stencil.frag"});
     EXPECT_EQ(samplerUnit(edges.id(), "uDepthUsed"), static_cast<GLint>(kDepthUsedUnit));
     EXPECT_EQ(samplerUnit(edges.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
+    const gpu::Program marks = gpu::compileProgram({.vertex = "media/upsample/seam_marks.vert", .fragment = "media/upsample/seam_marks.frag"});
+    EXPECT_EQ(storageBinding(marks.id(), "SeamParticles"), static_cast<GLint>(kSeamParticlesBinding));
+    EXPECT_EQ(storageBinding(marks.id(), "Particles"), static_cast<GLint>(kParticlesBinding));
+    EXPECT_EQ(samplerUnit(marks.id(), "uReducedMedia"), static_cast<GLint>(kReducedMediaUnit));
+    EXPECT_EQ(samplerUnit(marks.id(), "uSceneDepth"), static_cast<GLint>(kSceneDepthUnit));
     EXPECT_EQ(storageBinding(composite.id(), "BlockNeighbours"), static_cast<GLint>(kBlockNeighboursBinding));
 }
 

@@ -24,7 +24,7 @@ bool sameParticles(const ParticleSet& a, const ParticleSet& b) {
 auto sharedFields(const MediaRenderSettings& s) {
     return std::tie(s.mode, s.slices, s.sliceResolution, s.sliceTexelsPerRadius, s.slicesNearMeshes, s.sliceTexelsPerRadiusNearMeshes,
                     s.sliceDeposit, s.mediaScale, s.mediaScaleAuto,
-                    s.upsampleThreshold, s.upsampleOnly, s.scatteringVoxels, s.scatteringSweeps);
+                    s.upsampleThreshold, s.upsampleOnly, s.noMeshCuts, s.scatteringVoxels, s.scatteringSweeps);
 }
 
 auto ownFields(const BlocksSettings& s) {

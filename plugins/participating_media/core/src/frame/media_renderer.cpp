@@ -14,6 +14,7 @@
 #include "slices/light_slice_pairs_pass.h"
 #include "upsample/media_depth_used_pass.h"
 #include "upsample/media_edge_stencil_pass.h"
+#include "upsample/media_seam_marks_pass.h"
 
 namespace nimbus::media {
 
@@ -252,6 +253,12 @@ void MediaRenderer::addMedia(gpu::FrameGraph& graph, GraphFrame& context) {
         context.depthUsed = depthUsedPass_->add(graph, context, target);
         context.edgeThreshold = settings_.upsampleThreshold;
         if (const glm::ivec4 rect = technique_->edgeRect(); rect.z > 0) {
+            // Where a mesh lies inside the medium, its texels become edges too (media_seam_marks_pass.h).
+            if (!settings_.noMeshCuts) {
+                if (!seamMarksPass_) seamMarksPass_ = std::make_unique<MediaSeamMarksPass>();
+                context.depthUsed = seamMarksPass_->add(graph, context, *shared_->buffer,
+                                                        particlesCutByMeshes(context.host.occluders, *particles_), context.depthUsed, target);
+            }
             if (!edgeStencilPass_) edgeStencilPass_ = std::make_unique<MediaEdgeStencilPass>();
             const EdgeTarget edges = edgeStencilPass_->add(graph, context, context.depthUsed, target, context.edgeThreshold, rect);
             context.edges = technique_->addEdges(graph, context, frame_, edges);

@@ -24,6 +24,7 @@ inline constexpr GLuint kSlabsUnit = 0;           // MEDIA_SLABS_UNIT
 inline constexpr GLuint kPackedSlicesUnit = 0;    // MEDIA_PACKED_SLICES_UNIT (light_slice_pairs.frag)
 inline constexpr GLuint kHostDepthUnit = 0;       // MEDIA_HOST_DEPTH_UNIT
 inline constexpr GLuint kDepthUsedUnit = 0;       // MEDIA_DEPTH_USED_UNIT (edge_stencil.frag)
+inline constexpr GLuint kReducedMediaUnit = 0;    // MEDIA_REDUCED_MEDIA_UNIT (seam_marks.frag)
 inline constexpr GLuint kSheetUnit = 0;           // MEDIA_SHEET_UNIT (sheet_composite.frag)
 inline constexpr GLuint kSceneDepthUnit = 3;      // MEDIA_SCENE_DEPTH_UNIT
 inline constexpr GLuint kShadowDepthUnit = 4;     // MEDIA_SHADOW_DEPTH_UNIT
@@ -61,6 +62,7 @@ inline constexpr GLuint kSlicePiecesBinding = 11;        // MEDIA_SLICE_PIECES_B
 inline constexpr GLuint kVolumesBinding = 12;            // MEDIA_VOLUMES_BINDING
 inline constexpr GLuint kSplatFlagsBinding = 13;         // MEDIA_SPLAT_FLAGS_BINDING (per-particle splat variants)
 inline constexpr GLuint kSplatRanksBinding = 14;         // MEDIA_SPLAT_RANKS_BINDING (the edges' redraw)
+inline constexpr GLuint kSeamParticlesBinding = 15;      // MEDIA_SEAM_PARTICLES_BINDING (the seam marks)
 
 // The MediaSliceViews uniform block.
 struct alignas(16) GpuSliceViews {

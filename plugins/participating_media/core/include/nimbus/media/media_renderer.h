@@ -46,6 +46,7 @@ struct MediaFrameStats {
 class ParticleGpuBuffer;
 class MediaDepthUsedPass;
 class MediaEdgeStencilPass;
+class MediaSeamMarksPass;
 class LightSlicePairsPass;
 class SplatFloor;
 struct ImmediateFrame;
@@ -111,6 +112,7 @@ private:
     MediaFrameStats stats_;
     std::unique_ptr<MediaDepthUsedPass> depthUsedPass_;
     std::unique_ptr<MediaEdgeStencilPass> edgeStencilPass_;
+    std::unique_ptr<MediaSeamMarksPass> seamMarksPass_;
     std::unique_ptr<LightSlicePairsPass> slicePairsPass_;
     std::unique_ptr<SplatFloor> splatFloor_;
 };

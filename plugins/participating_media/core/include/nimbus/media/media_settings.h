@@ -41,6 +41,9 @@ struct MediaRenderSettings {
     // mixed_resolution=off: a reduced image is upsampled everywhere, its edges where a mesh enters
     // the medium not drawn again at full resolution (MediaTechnique::addEdges).
     bool upsampleOnly = false;
+    // mesh_cuts=off: of the pixels where a mesh's surface lies inside a particle, only the depth
+    // edges are drawn again (upsample/media_seam_marks_pass.h).
+    bool noMeshCuts = false;
     // The multiple-scattering model's grid (common/environment_grid.h), for frames of the multiple
     // model; zero: the defaults below.
     int scatteringVoxels = 0;  // voxels along the medium's longest side
