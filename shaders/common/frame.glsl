@@ -25,6 +25,11 @@ float linearViewDepth(float d) {
     return d + frame.depthParams.x > 0.0 ? frame.depthParams.y / (d + frame.depthParams.x) : 1e30;
 }
 
+// How far along the camera ray `dir` (unit) the surface at linear view depth `viewDepth` lies.
+float rayDistanceAtViewDepth(vec3 dir, float viewDepth) {
+    return frameOrthographic() ? viewDepth : viewDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
+}
+
 // The camera ray at a point of normalised device coordinates, relative to the frame origin, its
 // direction not normalised (both linear in the NDC; but llvmpipe's clipping breaks noperspective
 // interpolation, so splats hand over a point on their quad instead: splat_vertex.glsl).

@@ -37,5 +37,5 @@ void main() {
     vSource.rgb = fogSeen(vSource.rgb, fogAtPoint(pr.xyz));
     vDepthRadius = vec2(dot(pr.xyz, frame.cameraForward.xyz), pr.w);
     Billboard b = billboardOf(pr.xyz, pr.w);
-    gl_Position = b.coversScreen ? vec4(corner, 0.5, 1.0) : frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);
+    gl_Position = billboardCornerClip(b, pr.xyz, corner);
 }

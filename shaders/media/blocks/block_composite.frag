@@ -81,7 +81,7 @@ void main() {
     vec3 origin, dir;
     cameraRay(fragCoord, origin, dir);
     float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
-    float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
+    float tSurface = rayDistanceAtViewDepth(dir, sceneDepth);
 #if defined(BLOCK_LIT_IMPOSTOR) && defined(BLOCK_EXACT_CUT)
     // Off the seam (block_shading=seam draws the exact shading there): the surface cuts the block's
     // opacity, and at most its kernels' tails, whose light the texels' stands for.

@@ -35,7 +35,7 @@ void main() {
         vec3 origin, dir;
         cameraRay(fragCoord, origin, dir);
         float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
-        float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
+        float tSurface = rayDistanceAtViewDepth(dir, sceneDepth);
         float front = s.front + tile.instance.x, back = s.back + tile.instance.x;
         if (tSurface > front - reach && tSurface < back + reach) {
             outSeam = 1.0;

@@ -21,6 +21,11 @@ Billboard billboardOf(vec3 centre, float radius) {
     return Billboard(toWorld * (right * half_), toWorld * (up * half_), false);
 }
 
+// A billboard corner (x, y in ±1) in clip space: the quad's, or the whole screen's where it covers it.
+vec4 billboardCornerClip(Billboard b, vec3 centre, vec2 corner) {
+    return b.coversScreen ? vec4(corner, 0.5, 1.0) : frame.viewProjection * vec4(centre + b.right * corner.x + b.up * corner.y, 1.0);
+}
+
 // The camera ray through an origin-relative world point.
 void cameraRayThrough(vec3 point, out vec3 origin, out vec3 dir) {
     if (frameOrthographic()) {

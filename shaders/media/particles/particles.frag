@@ -31,7 +31,7 @@ void main() {
     if (chord.halfChord <= 0.0) discard;
 
     float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
-    float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
+    float tSurface = rayDistanceAtViewDepth(dir, sceneDepth);
     float tEnd = 1e30;
     if (uSoftParticles != 0) {
         tEnd = tSurface;  // the exact soft-particle fade: only the part of the kernel in front counts

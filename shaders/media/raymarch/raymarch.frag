@@ -70,7 +70,7 @@ void main() {
     vec3 origin, dir;
     cameraRay(fragCoord, origin, dir);
     float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
-    float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
+    float tSurface = rayDistanceAtViewDepth(dir, sceneDepth);
     vec2 span = gridInterval(origin, dir);
     span.y = min(span.y, tSurface);
     if (!(span.y > span.x)) {

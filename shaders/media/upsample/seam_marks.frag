@@ -24,7 +24,7 @@ void main() {
     vec3 origin, dir;
     cameraRay(fragCoord, origin, dir);
     float sceneDepth = linearViewDepth(texelFetch(uSceneDepth, ivec2(fragCoord), 0).r);
-    float tSurface = frameOrthographic() ? sceneDepth : sceneDepth / max(dot(dir, frame.cameraForward.xyz), 1e-6);
+    float tSurface = rayDistanceAtViewDepth(dir, sceneDepth);
     vec3 toCentre = vCentreRadius.xyz - origin;
     float tClosest = dot(toCentre, dir);
     float missSquared = dot(toCentre, toCentre) - tClosest * tClosest;

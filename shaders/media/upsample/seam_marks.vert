@@ -18,5 +18,5 @@ void main() {
     vCentreRadius = pr;
     vec2 corner = kCorners[gl_VertexID];
     Billboard b = billboardOf(pr.xyz, pr.w);
-    gl_Position = b.coversScreen ? vec4(corner, 0.5, 1.0) : frame.viewProjection * vec4(pr.xyz + b.right * corner.x + b.up * corner.y, 1.0);
+    gl_Position = billboardCornerClip(b, pr.xyz, corner);
 }

@@ -16,6 +16,7 @@ struct Toy {
     float scale = 0.0f;
     bool scaleAuto = false;
     bool soft = true;
+    bool noEdges = false;  // zero is on: edges=off sets it
     enum class Shade : unsigned char { Seam, Smooth } shade = Shade::Seam;
 };
 
@@ -25,6 +26,7 @@ const SettingField<Toy> kToyFields[] = {
      &setNumberOrAuto<&Toy::scale, &Toy::scaleAuto>},
     {{.key = "soft", .help = "soft", .type = SettingType::Boolean, .tiers = kTierExact}, &setBoolean<&Toy::soft>},
     {{.key = "shade", .help = "shade", .type = SettingType::Choice, .words = {"seam", "smooth"}}, &setChoice<&Toy::shade>},
+    {{.key = "edges", .help = "edges", .type = SettingType::Boolean}, &setBooleanOff<&Toy::noEdges>},
 };
 
 Settings toySettings() {
@@ -59,6 +61,10 @@ TEST(Settings, ExplicitValuesApplyOnTopOfTheTiersStruct) {
     const Toy number = readFields<Toy>(s, kToyFields, Toy{.scale = 0.5f, .scaleAuto = true});
     EXPECT_FALSE(number.scaleAuto) << "a number clears auto";
     EXPECT_EQ(number.scale, 0.25f);
+    s.set("edges", "off");
+    EXPECT_TRUE(readFields<Toy>(s, kToyFields, Toy{}).noEdges) << "off sets a field whose zero is on";
+    s.set("edges", "on");
+    EXPECT_FALSE(readFields<Toy>(s, kToyFields, Toy{.noEdges = true}).noEdges);
 }
 
 TEST(Settings, ValuesOutsideTheSpecAreRefusedNamingOriginKeyAndRange) {

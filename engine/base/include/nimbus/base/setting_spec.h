@@ -85,6 +85,9 @@ struct SettingField {
 // Appliers for the common shapes, e.g. &setInteger<&BlocksSettings::blocks>.
 template <auto Member, class S>
 void setBoolean(S& s, const SettingValue& v) { s.*Member = v.boolean; }
+// For a field whose zero means on (zero is the default): the key's "off" sets it.
+template <auto Member, class S>
+void setBooleanOff(S& s, const SettingValue& v) { s.*Member = !v.boolean; }
 template <auto Member, class S>
 void setInteger(S& s, const SettingValue& v) { s.*Member = static_cast<int>(v.integer); }
 template <auto Member, class S>

@@ -38,10 +38,6 @@ void setSliceDetail(MediaRenderSettings& s, const SettingValue& v) {
 bool sliceResolutionAuto(const MediaRenderSettings& s) { return s.sliceTexelsPerRadius > 0.0f; }
 // The upsampler runs only where the media pass is smaller than the frame.
 
-// mixed_resolution is on where the field is zero (MediaRenderSettings::upsampleOnly).
-void setMixedResolution(MediaRenderSettings& s, const SettingValue& v) { s.upsampleOnly = !v.boolean; }
-// mesh_cuts is on where the field is zero (MediaRenderSettings::noMeshCuts).
-void setMeshCuts(MediaRenderSettings& s, const SettingValue& v) { s.noMeshCuts = !v.boolean; }
 bool edgesRedrawn(const MediaRenderSettings& s) { return offscreenMedia(s) && !s.upsampleOnly; }
 
 enum class Acts { Everywhere, LitBySlices, SliceDeposit, MultipleScattering, Edges };
@@ -102,14 +98,14 @@ const SharedField kSharedFields[] = {
                "enters it (off: upsampled there too, and a thin mesh shows a seam; faster)",
        .type = SettingType::Boolean, .defaultValue = "on",
        .actsWhen = "with media_scale below 1 or auto", .showsWith = kShowsWithReducedTarget},
-      &setMixedResolution, &offscreenMedia},
+      &setBooleanOff<&MediaRenderSettings::upsampleOnly>, &offscreenMedia},
      Acts::Edges},
     {{{.key = "mesh_cuts",
        .help = "with mixed_resolution: also draw the medium again at full resolution where a mesh's surface lies inside a "
                "particle and shows through the medium in front of it (off: only at the reduced image's depth edges; faster)",
        .type = SettingType::Boolean, .defaultValue = "on",
        .actsWhen = "with mixed_resolution on and media_scale below 1 or auto", .showsWith = kShowsWithReducedTarget},
-      &setMeshCuts, &edgesRedrawn},
+      &setBooleanOff<&MediaRenderSettings::noMeshCuts>, &edgesRedrawn},
      Acts::Edges},
     {{{.key = "scattering_voxels", .help = "multiple scattering: voxels of the grid its scattered light diffuses on, along the medium's longest side",
        .type = SettingType::Integer, .min = 4, .max = 128, .defaultValue = std::to_string(kDefaultScatteringVoxels),
