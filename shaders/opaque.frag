@@ -117,11 +117,16 @@ void main() {
     // more under an empty mask, which doubled the cost of a one-light frame.
     int i = VERTEX_LIGHTS;
     do {
+#ifdef POINT_FRAGMENT_LIGHTS
+        const int views = 6;  // or none: the lookups then return before reading any
+#else
+        int views = int(lights[i].spot.w);
+#endif
         LightSample s = sampleLight(i, vPosition);
-        float visibility = meshVisibility(i, vPosition, n);
+        float visibility = meshVisibilityOf(i, views, vPosition, n);
         float transmittance = 1.0;
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
-        transmittance = mediaTransmittance(i, lights[i].position.xyz, vPosition);
+        transmittance = exp(-mediaOpticalDepthOf(i, views, lights[i].position.xyz, vPosition));
 #endif
         radiance += lightTerm(brdf, n, v, s, visibility, transmittance);
     } while (++i < frame.counts.x);

@@ -33,14 +33,26 @@ float shadowLookup(GpuLightView v, vec4 clip) {
 }
 
 // Fraction of PCF taps that see light `lightIndex` from p, looked up from p + offsetDir · offset.
-float meshVisibility(int lightIndex, vec3 p, vec3 offsetDir) {
+// A cube's faces share the first's offset scale (one field of view and size); each has its own
+// depth planes, which give the reversed-Z clip depth n(f − z)/(f − n) of reversedPerspective.
+// `count`: the light's view count, a constant where the caller knows it (opaque.frag).
+float meshVisibilityOf(int lightIndex, int count, vec3 p, vec3 offsetDir) {
     GpuLight L = lights[lightIndex];
     int first = int(L.spot.z);
     if (first < 0) return 1.0;
-    GpuLightView v = shadowViews[lightViewIndex(first, int(L.spot.w), L.position.xyz, p)];
-    float depth = max(-(v.view * vec4(p, 1.0)).z, 0.0);
-    return shadowLookup(v, v.viewProjection * vec4(p + offsetDir * shadowOffset(v, depth), 1.0));
+    int face = lightViewFace(count, L.position.xyz, p);
+    GpuLightView single = shadowViews[first];
+    float depth;
+    lightViewPoint(single, count, face, L.position.xyz, p, depth);
+    float unused;
+    vec4 clip = lightViewPoint(single, count, face, L.position.xyz, p + offsetDir * shadowOffset(single, max(depth, 0.0)), unused);
+    GpuLightView v = shadowViews[first + face];
+    float n = v.params.y, f = v.params.z;
+    if (count == 6) clip.z = n * (f - clip.w) / (f - n);
+    return shadowLookup(v, clip);
 }
+
+float meshVisibility(int lightIndex, vec3 p, vec3 offsetDir) { return meshVisibilityOf(lightIndex, int(lights[lightIndex].spot.w), p, offsetDir); }
 
 // The same for a light with at most one view, from p's clip coordinates `clip` in it and the
 // normal offset's image `offsetClip` there, both from the vertex stage (opaque.vert): linear in p,

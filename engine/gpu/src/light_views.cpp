@@ -61,6 +61,17 @@ int cubeFace(const glm::vec3& d) {
     return d.z >= 0.0f ? 4 : 5;
 }
 
+glm::vec3 cubeFaceView(int face, const glm::vec3& d) {
+    switch (face) {
+        case 0: return {-d.z, -d.y, d.x};
+        case 1: return {d.z, -d.y, -d.x};
+        case 2: return {d.x, d.z, d.y};
+        case 3: return {d.x, -d.z, -d.y};
+        case 4: return {d.x, -d.y, d.z};
+        default: return {-d.x, -d.y, -d.z};
+    }
+}
+
 std::vector<LightView> makeLightViews(const PunctualLight& light, const Aabb& bounds, const glm::dvec3& origin) {
     std::vector<LightView> views;
     if (bounds.empty()) return views;

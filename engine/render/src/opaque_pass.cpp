@@ -26,6 +26,7 @@ const gpu::Program& OpaquePass::program(const Variant& variant) {
         defines.push_back("VERTEX_LIGHTS " + std::to_string(variant.vertexLights));
         defines.push_back("VERTEX_DIRECTIONAL_LIGHTS " + std::to_string(variant.directionalMask) + "u");
         if (variant.fragmentLights) defines.emplace_back("FRAGMENT_LIGHTS");
+        if (variant.pointFragmentLights) defines.emplace_back("POINT_FRAGMENT_LIGHTS");
         defines.push_back("PCF_RADIUS " + std::to_string(variant.pcfRadius));
         it = programs_.emplace(variant, gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = defines})).first;
     }
@@ -34,7 +35,8 @@ const gpu::Program& OpaquePass::program(const Variant& variant) {
 
 // The frame's part of the variant: the extensions, the PCF kernel, and the lights. The first lights
 // with at most one view each (not a point light's cube), up to opaque.vert's four, get their
-// shadow-map and light-slice coordinates from the vertex stage.
+// shadow-map and light-slice coordinates from the vertex stage. Where the rest are all point lights,
+// the fragments know it: their lookups then read no view's matrices (common/light_views.glsl).
 OpaquePass::Variant OpaquePass::frameVariant(const FrameContext& context) {
     constexpr int kMaxVertexLights = 4;
     const auto& lights = context.input.lights;
@@ -48,6 +50,9 @@ OpaquePass::Variant OpaquePass::frameVariant(const FrameContext& context) {
         ++variant.vertexLights;
     }
     variant.fragmentLights = static_cast<int>(lights.size()) > variant.vertexLights;
+    variant.pointFragmentLights = variant.fragmentLights && std::all_of(lights.begin() + variant.vertexLights, lights.end(), [](const auto& light) {
+        return light.params.type == assets::LightType::Point;
+    });
     return variant;
 }
 

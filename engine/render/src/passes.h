@@ -34,13 +34,14 @@ public:
 private:
     // What a program is compiled for: a material's features (material_binding.h), the extensions'
     // mesh shading defines, and the frame's lighting (shaders/opaque.frag VERTEX_LIGHTS,
-    // FRAGMENT_LIGHTS, PCF_RADIUS), all fixed at compile time because llvmpipe runs both sides of a branch.
+    // FRAGMENT_LIGHTS, POINT_FRAGMENT_LIGHTS, PCF_RADIUS), all fixed at compile time because llvmpipe runs both sides of a branch.
     struct Variant {
         unsigned features = 0;
         std::vector<std::string> extensions;
         int vertexLights = 0;
         unsigned directionalMask = 0;  // bit i: vertex light i is directional
         bool fragmentLights = false;
+        bool pointFragmentLights = false;  // every fragment light is a point light (six views or none)
         int pcfRadius = 0;
         auto operator<=>(const Variant&) const = default;
     };

@@ -19,10 +19,13 @@ float meshShadowMargin(int lightIndex, vec3 p) {
     GpuLight L = lights[lightIndex];
     int first = int(L.spot.z);
     if (first < 0) return 1e30;
-    GpuLightView v = shadowViews[lightViewIndex(first, int(L.spot.w), L.position.xyz, p)];
+    int count = int(L.spot.w);
+    int face = lightViewFace(count, L.position.xyz, p);
+    float receiver;
+    vec4 clip = lightViewPoint(shadowViews[first], count, face, L.position.xyz, p, receiver);
+    GpuLightView v = shadowViews[first + face];
     vec2 uv;
-    if (!lightViewUv(v, p, uv)) return 1e30;
-    float receiver = -(v.view * vec4(p, 1.0)).z;
+    if (!lightViewClipUv(clip, uv)) return 1e30;
     return shadowTexelDepth(v, texture(uShadowDepth, vec3(uv, v.params2.x)).r) - receiver;
 }
 

@@ -43,9 +43,20 @@ int mediaLightSliceView(int light, vec3 lightPosition, vec3 p) {
     return s.x < 0 ? -1 : lightViewIndex(s.x, s.y, lightPosition, p);
 }
 
+// The view's matrices are its light's first view's (lightViewPoint): a cube face's are not read.
+// `count`: the light's slice view count (1, or 6 for a point light), a constant where the caller
+// knows it.
+float mediaOpticalDepthOf(int light, int count, vec3 lightPosition, vec3 p) {
+    int first = mediaLightSlices[light].x;
+    if (mediaSliceCount.x == 0 || first < 0) return 0.0;
+    int face = lightViewFace(count, lightPosition, p);
+    float depth;
+    vec4 clip = lightViewPoint(mediaSliceViews[first], count, face, lightPosition, p, depth);
+    return mediaViewOpticalDepthAt(mediaSliceViews[first + face], clip, depth);
+}
+
 float mediaOpticalDepth(int light, vec3 lightPosition, vec3 p) {
-    int view = mediaLightSliceView(light, lightPosition, p);
-    return view < 0 ? 0.0 : mediaViewOpticalDepth(mediaSliceViews[view], p);
+    return mediaOpticalDepthOf(light, mediaLightSlices[light].y, lightPosition, p);
 }
 
 float mediaTransmittance(int light, vec3 lightPosition, vec3 p) { return exp(-mediaOpticalDepth(light, lightPosition, p)); }

@@ -164,6 +164,35 @@ TEST(PointLightView, SixFacesAndCubeFaceSelectsTheOneContainingThePoint) {
     }
 }
 
+// The shaders find a point's place in a cube face without its matrices: the swizzle must be the
+// face's view exactly, and its ndc (xy / z) the projection's.
+TEST(CubeFaceView, IsTheFaceViewWithoutItsMatrices) {
+    assets::ResolvedLight point;
+    point.params.type = assets::LightType::Point;
+    point.position = {1.5, -2.0, 0.5};
+    const glm::dvec3 origin(0.3, -0.2, 0.1);
+    const std::vector<LightView> views = makeLightViews(point, box({-4, -5, -3}, {6, 3, 4}), origin);
+    ASSERT_EQ(views.size(), 6u);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int i = 0; i < 300; ++i) {
+        const double x = u(rng), y = u(rng), z = u(rng);
+        const glm::dvec3 d(x, y, z);
+        if (glm::length(d) < 0.05) continue;
+        const int face = cubeFace(glm::vec3(d));
+        const LightView& v = views[static_cast<std::size_t>(face)];
+        const glm::dvec3 p = point.position + d - origin;
+        const glm::vec3 c = cubeFaceView(face, glm::vec3(d));
+        const glm::vec4 inView = v.view * glm::vec4(glm::vec3(p), 1.0f);
+        EXPECT_NEAR(c.x, inView.x, 1e-5) << "point " << i << " face " << face;
+        EXPECT_NEAR(c.y, inView.y, 1e-5) << "point " << i << " face " << face;
+        EXPECT_NEAR(c.z, -inView.z, 1e-5) << "point " << i << " face " << face;
+        const glm::dvec3 ndc = clipOf(v, p);
+        EXPECT_NEAR(c.x / c.z, ndc.x, 1e-5);
+        EXPECT_NEAR(c.y / c.z, ndc.y, 1e-5);
+    }
+}
+
 TEST(CubeFace, PicksTheDominantAxis) {
     EXPECT_EQ(cubeFace({1.0f, 0.5f, 0.2f}), 0);
     EXPECT_EQ(cubeFace({-2.0f, 1.0f, 1.0f}), 1);

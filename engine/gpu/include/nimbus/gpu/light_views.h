@@ -44,4 +44,9 @@ inline float lightViewDepth(const LightView& v, const glm::vec3& p) { return -(v
 // order of makeLightViews for point lights and the GLSL lookup.
 int cubeFace(const glm::vec3& direction);
 
+// A direction from a point light in the view of its cube face `face`: x and y across the face (its
+// NDC is xy / z) and z the view depth. The faces are OpenGL's cube-map faces, so this is a signed
+// swizzle, mirrored by the GLSL cubeFaceView: the shaders need no face's matrices.
+glm::vec3 cubeFaceView(int face, const glm::vec3& direction);
+
 }  // namespace nimbus::gpu

@@ -9,6 +9,7 @@ namespace nimbus::render {
 
 using gpu::LightView;
 using gpu::cubeFace;
+using gpu::cubeFaceView;
 using gpu::lightViewDepth;
 
 gpu::PunctualLight punctualLight(const assets::ResolvedLight& light);
