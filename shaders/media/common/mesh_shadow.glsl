@@ -15,11 +15,11 @@ float shadowTexelDepth(GpuLightView v, float stored) {
 
 // How far p lies in front of the shadow map's occluder along the light (metres; > 0 lit), at one
 // tap without filtering. Very large where nothing casts a shadow there.
-float meshShadowMargin(int lightIndex, vec3 p) {
+// `count`: the light's view count, a constant where the caller knows it (splat_source.glsl).
+float meshShadowMarginOf(int lightIndex, int count, vec3 p) {
     GpuLight L = lights[lightIndex];
     int first = int(L.spot.z);
     if (first < 0) return 1e30;
-    int count = int(L.spot.w);
     int face = lightViewFace(count, L.position.xyz, p);
     float receiver;
     vec4 clip = lightViewPoint(shadowViews[first], count, face, L.position.xyz, p, receiver);
@@ -29,8 +29,12 @@ float meshShadowMargin(int lightIndex, vec3 p) {
     return shadowTexelDepth(v, texture(uShadowDepth, vec3(uv, v.params2.x)).r) - receiver;
 }
 
+float meshShadowMargin(int lightIndex, vec3 p) { return meshShadowMarginOf(lightIndex, int(lights[lightIndex].spot.w), p); }
+
 // The same comparison at one shadow-map tap, without the lateral filter: 1 lit, 0 shadowed, soft
 // only over the particle's depth extent.
-float meshVisibilityTap(int lightIndex, vec3 p, float softness) {
-    return 0.5 * (1.0 + erfApprox(meshShadowMargin(lightIndex, p) / (max(softness, 1e-4) * 1.41421356)));
+float meshVisibilityTapOf(int lightIndex, int count, vec3 p, float softness) {
+    return 0.5 * (1.0 + erfApprox(meshShadowMarginOf(lightIndex, count, p) / (max(softness, 1e-4) * 1.41421356)));
 }
+
+float meshVisibilityTap(int lightIndex, vec3 p, float softness) { return meshVisibilityTapOf(lightIndex, int(lights[lightIndex].spot.w), p, softness); }

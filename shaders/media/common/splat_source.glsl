@@ -39,6 +39,16 @@ void peakOrder(int light, vec3 origin, vec3 dir, LampNodes q, float tSurface, bo
 }
 #endif
 
+// A lamp's mesh shadow tap and slice optical depth at x. MEDIA_POINT_LAMPS: every lamp is a point
+// light, whose six views the lookups then know, reading no view's matrices (common/light_views.glsl).
+#ifdef MEDIA_POINT_LAMPS
+float lampVisibilityTap(int light, vec3 x, float softness) { return meshVisibilityTapOf(light, 6, x, softness); }
+float lampOpticalDepth(int light, vec3 x) { return mediumOpticalDepthOf(light, 6, x); }
+#else
+float lampVisibilityTap(int light, vec3 x, float softness) { return meshVisibilityTap(light, x, softness); }
+float lampOpticalDepth(int light, vec3 x) { return mediumOpticalDepth(light, x); }
+#endif
+
 // Elsewhere S varies slowly over the segment and is taken at the shading point p: the quadrature
 // loop's first pass, which every lane runs, evaluates it there instead of at its first node (one
 // slice fetch and one shadow tap a fragment fewer).
@@ -70,9 +80,9 @@ float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi,
         vec3 toX = lamp - x;
         float d2 = max(dot(toX, toX), 1e-12);
         // Near the lamp its light comes from within about its distance, not from the whole kernel.
-        float visibility = lights[light].spot.z >= 0.0 ? meshVisibilityTap(light, x, near ? 0.1 * sqrt(d2) : radius / 3.0) : 1.0;
+        float visibility = lights[light].spot.z >= 0.0 ? lampVisibilityTap(light, x, near ? 0.1 * sqrt(d2) : radius / 3.0) : 1.0;
         float lit_ = lightShape(light, x) * phaseValue(vPhase.x, vPhase.y, toX * inversesqrt(d2), dir) * visibility;
-        float depth = mediumOpticalDepth(light, x);
+        float depth = lampOpticalDepth(light, x);
         atP = lit_ * exp(-depth) / d2;  // read only where not near: the first pass's, at p
         depth += vSigma * radius * max(kernelSegment(beta, u / radius) - entry, 0.0);
 #ifdef SPLAT_LAMP_ORDER

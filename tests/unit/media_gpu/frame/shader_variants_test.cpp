@@ -71,8 +71,13 @@ TEST_F(ShaderVariants, ParticleSplats) {
             for (bool constant : {false, true})
                 for (bool crossings : {false, true})
                     for (bool multiple : {false, true})
-                        descs.push_back(particleSplatDesc(
-                            {.eyeInside = eyeInside, .lamps = lamps, .constant = constant, .meshCrossings = crossings, .multiple = multiple}));
+                        for (bool pointLamps : {false, lamps})
+                            descs.push_back(particleSplatDesc({.eyeInside = eyeInside,
+                                                               .lamps = lamps,
+                                                               .pointLamps = pointLamps,
+                                                               .constant = constant,
+                                                               .meshCrossings = crossings,
+                                                               .multiple = multiple}));
     expectCompiles(descs);
 }
 
@@ -80,7 +85,8 @@ TEST_F(ShaderVariants, SheetSplats) {
     std::vector<gpu::ProgramDesc> descs{sheetCompositeDesc()};
     for (bool lamps : {false, true})
         for (bool constant : {false, true})
-            for (bool multiple : {false, true}) descs.push_back(sheetSplatDesc(lamps, constant, multiple));
+            for (bool multiple : {false, true})
+                for (bool pointLamps : {false, lamps}) descs.push_back(sheetSplatDesc(lamps, constant, multiple, pointLamps));
     addBothLightings(descs, sheetExactDesc());
     expectCompiles(descs);
 }

@@ -90,13 +90,16 @@ FragmentLamps fragmentLamps(const std::vector<Light>& lights) {
     FragmentLamps out;
     out.lamps.fill(-1);
     std::size_t k = 0;
+    out.allPoint = true;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         if (lights[i].kind == gpu::LightKind::Directional) {
             if (out.sun < 0) out.sun = static_cast<GLint>(i);
         } else if (k < out.lamps.size()) {
             out.lamps[k++] = static_cast<GLint>(i);
+            out.allPoint = out.allPoint && lights[i].kind == gpu::LightKind::Point;
         }
     }
+    out.allPoint = out.allPoint && k > 0;
     return out;
 }
 

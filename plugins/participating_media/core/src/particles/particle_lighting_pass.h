@@ -21,6 +21,7 @@ inline constexpr int kMaxFragmentLamps = 2;  // shaders/media/common/particle_li
 struct FragmentLamps {
     GLint sun = -1;
     std::array<GLint, kMaxFragmentLamps> lamps{};
+    bool allPoint = false;  // every listed lamp is a point light (six views): MEDIA_POINT_LAMPS
 };
 FragmentLamps fragmentLamps(const std::vector<Light>& lights);
 

@@ -44,8 +44,9 @@ gpu::PipelineState depthTested(gpu::PipelineState state) {
 ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 
 const gpu::Program& ParticleSplatPass::program(const SplatVariant& variant) {
-    gpu::Program& p = programs_[(variant.eyeInside ? 1 : 0) + (variant.lamps ? 2 : 0) + (variant.constant ? 4 : 0) +
-                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0) + (variant.rankList ? 32 : 0) + (variant.depthTested ? 64 : 0)];
+    gpu::Program& p = programs_.at((variant.eyeInside ? 1 : 0) + (variant.lamps ? 2 : 0) + (variant.constant ? 4 : 0) +
+                                (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0) + (variant.rankList ? 32 : 0) + (variant.depthTested ? 64 : 0) +
+                                (variant.lamps && variant.pointLamps ? 128 : 0));
     if (!p) p = gpu::compileProgram(particleSplatDesc(variant));
     return p;
 }
@@ -54,6 +55,7 @@ gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant) {
     gpu::ProgramDesc desc{.vertex = "media/particles/particle_splats.vert", .fragment = "media/particles/particle_splats.frag"};
     if (variant.eyeInside) desc.defines.push_back("MEDIA_EYE_INSIDE");
     if (variant.lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
+    if (variant.lamps && variant.pointLamps) desc.defines.push_back("MEDIA_POINT_LAMPS");
     if (variant.constant) desc.defines.push_back("SPLAT_CONSTANT");
     if (variant.meshCrossings && !variant.constant) desc.defines.push_back("MEDIA_MESH_CROSSINGS");
     if (variant.multiple) desc.defines.push_back("MEDIA_MULTIPLE");
@@ -120,6 +122,7 @@ void ParticleSplatPass::draw(const gpu::PassResources& resources, const SplatInp
     SplatVariant variant = s.variant;
     variant.multiple = s.context.multiple;
     variant.rankList = !ranks.empty();
+    variant.pointLamps = s.lamps.allPoint;
     // The particle at each place of the draw: its rank's, or its listed rank's.
     std::vector<std::uint32_t> listed;
     if (variant.rankList) {

@@ -1,5 +1,7 @@
 #pragma once
 // The `particle_splats` pass of the fast tiers (shaders/media/particle_splats.*).
+#include <array>
+
 #include "common/particle_buffer.h"
 #include "common/media_target.h"
 #include "nimbus/gpu/frame_graph.h"
@@ -16,6 +18,7 @@ namespace nimbus::media {
 struct SplatVariant {
     bool eyeInside = false;      // some particle contains the eye (its segment starts there)
     bool lamps = false;          // point or spot lights per fragment (set by add from its lamps)
+    bool pointLamps = false;     // with lamps: all of them point lights (set by draw from its lamps)
     bool constant = false;       // one ray per particle (LightingVariant::constant)
     bool meshCrossings = false;  // the sun's mesh visibility per fragment where the lighting pass flags a crossing
     bool multiple = false;       // the multiple model: the sun's forward-peak orders (set by add from the frame)
@@ -77,9 +80,9 @@ public:
 
 private:
     const gpu::Program& program(const SplatVariant& variant);
-    // By eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple + 32·rankList + 64·depthTested,
-    // built when first asked for.
-    gpu::Program programs_[128];
+    // By eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple + 32·rankList + 64·depthTested
+    // + 128·pointLamps (with lamps), built when first asked for.
+    std::array<gpu::Program, 256> programs_;
     gpu::Buffer ranks_;          // draw's `ranks`, grown as needed
     std::size_t ranksCapacity_ = 0;
     gpu::Texture kernelTable_;

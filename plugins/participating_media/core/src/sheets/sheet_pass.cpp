@@ -22,9 +22,10 @@ constexpr gpu::PipelineState kSheetSum = gpu::PipelineState::blending(gpu::kAddi
 
 SheetPass::SheetPass() : composite_(gpu::compileProgram(sheetCompositeDesc())), kernelTable_(createKernelTable()) {}
 
-gpu::ProgramDesc sheetSplatDesc(bool lamps, bool constant, bool multiple) {
+gpu::ProgramDesc sheetSplatDesc(bool lamps, bool constant, bool multiple, bool pointLamps) {
     gpu::ProgramDesc desc{.vertex = "media/sheets/sheet_splats.vert", .fragment = "media/sheets/sheet_splats.frag"};
     if (lamps) desc.defines.push_back("MEDIA_FRAGMENT_LAMPS");
+    if (lamps && pointLamps) desc.defines.push_back("MEDIA_POINT_LAMPS");
     if (constant) desc.defines.push_back("SPLAT_CONSTANT");
     if (multiple) desc.defines.push_back("MEDIA_MULTIPLE");
     return desc;
@@ -36,9 +37,10 @@ gpu::ProgramDesc sheetExactDesc() {
 
 gpu::ProgramDesc sheetCompositeDesc() { return {.vertex = "fullscreen.vert", .fragment = "media/sheets/sheet_composite.frag"}; }
 
-const gpu::Program& SheetPass::splatProgram(bool lamps, bool constant, bool multiple) {
-    gpu::Program& p = splatPrograms_[(lamps ? 1 : 0) + (constant ? 2 : 0) + (multiple ? 4 : 0)];
-    if (!p) p = gpu::compileProgram(sheetSplatDesc(lamps, constant, multiple));
+const gpu::Program& SheetPass::splatProgram(bool lamps, bool constant, bool multiple, bool pointLamps) {
+    pointLamps = lamps && pointLamps;
+    gpu::Program& p = splatPrograms_.at((lamps ? 1 : 0) + (constant ? 2 : 0) + (multiple ? 4 : 0) + (pointLamps ? 8 : 0));
+    if (!p) p = gpu::compileProgram(sheetSplatDesc(lamps, constant, multiple, pointLamps));
     return p;
 }
 
@@ -48,7 +50,7 @@ gpu::ResourceHandle SheetPass::add(gpu::FrameGraph& graph, GraphFrame& context, 
     const bool perFragment = lighting == nullptr;
     if (perFragment && !exact_) exact_ = std::make_unique<LocalLightPrograms>(sheetExactDesc());
     const gpu::Program& slabs =
-        perFragment ? exact_->forLights(context.host.lights, context.multiple) : splatProgram(lamps.lamps[0] >= 0, constant, context.multiple);
+        perFragment ? exact_->forLights(context.host.lights, context.multiple) : splatProgram(lamps.lamps[0] >= 0, constant, context.multiple, lamps.allPoint);
     // The splats read the slices and the shadow map only for their per-fragment lamps.
     const bool lit = perFragment || lamps.lamps[0] >= 0;
     struct Data {

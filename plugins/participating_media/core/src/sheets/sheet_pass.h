@@ -1,5 +1,6 @@
 #pragma once
 // The `media_sheets` pass of `sheets` mode (shaders/media/sheets/sheet_splats.*, sheet_composite.frag).
+#include <array>
 #include <memory>
 
 #include "common/local_light_programs.h"
@@ -14,8 +15,9 @@
 
 namespace nimbus::media {
 
-// The sheet splat program: lamps per fragment, one ray per particle (as particleSplatDesc).
-gpu::ProgramDesc sheetSplatDesc(bool lamps, bool constant, bool multiple = false);
+// The sheet splat program: lamps per fragment (all of them point lights: pointLamps), one ray per
+// particle (as particleSplatDesc).
+gpu::ProgramDesc sheetSplatDesc(bool lamps, bool constant, bool multiple = false, bool pointLamps = false);
 // The exact tier's slab program (sheet_exact.*), lit per fragment; LocalLightPrograms adds its builds.
 gpu::ProgramDesc sheetExactDesc();
 gpu::ProgramDesc sheetCompositeDesc();
@@ -34,8 +36,8 @@ public:
                             const MediaTarget& target);
 
 private:
-    const gpu::Program& splatProgram(bool lamps, bool constant, bool multiple);
-    gpu::Program splatPrograms_[8];  // by lamps + 2·constant + 4·multiple, built when first asked for
+    const gpu::Program& splatProgram(bool lamps, bool constant, bool multiple, bool pointLamps);
+    std::array<gpu::Program, 16> splatPrograms_;  // by lamps + 2·constant + 4·multiple + 8·pointLamps, built when first asked for
     std::unique_ptr<LocalLightPrograms> exact_;  // built when first asked for
     gpu::Program composite_;
     gpu::Texture kernelTable_;
