@@ -2,7 +2,7 @@
 """Assembles docs/PERFORMANCE.md from the measurements scripts/bench just took.
 
 Usage: tools/make_performance_md.py BENCH_DIR DOCS_DIR
-       tools/make_performance_md.py --sweeps|--multiple|--raymarch|--editor BENCH_DIR DOCS_DIR   (one section)
+       tools/make_performance_md.py --tiers|--sweeps|--multiple|--raymarch|--editor BENCH_DIR DOCS_DIR   (one section)
 Every number in the page comes from BENCH_DIR; the prose around them only says what the numbers
 show (which setting is on the Pareto front, how cost grows), so the page stays true to the code.
 The sections this script does not generate (each names the script or test that measured it) are
@@ -120,12 +120,14 @@ def tiers_section(runs, bench_dir):
             "fragment (a lamp's near field with the exact tier's quadrature and, around its peak, neighbour order); per "
             "fragment otherwise one kernel-table fetch.",
             "- `fast`: as balanced with cheaper light (one table fetch per ray), slices deposited in O(N) fill, automatic "
-            "slice resolution, media at ¼ to ½ resolution where particles cover the image more than 2.5 times over, "
-            "and cheaper mesh shadows.",
+            "slice resolution, media at ¼ to ½ resolution where particles cover the image more than 2.5 times over "
+            "and a typical billboard keeps 8 texels across its half size at ½ (drawn again at full resolution at the "
+            "edges where a mesh enters the medium: `mixed_resolution`), and cheaper mesh shadows.",
             "- `billboards`: not a tier but the yardstick of what a typical engine ships: sorted sprites lit once per "
             "particle, no volumetric or mesh shadows, a soft-particle fade, one fetch per fragment.", "",
             "### Every content scene at 1280×720", "",
-            "One `sandbox bench` run per scene, the rows side by side; error is rel-RMSE against the reference of the same frame. "
+            "One `sandbox bench` run per scene (scripts/bench-tiers), the rows side by side, in single scattering: error is "
+            "rel-RMSE against the single-scattering reference of the same frame. "
             "Each row's multiple is of the floor measured right after its own frames; the floor column is the median of "
             "the rows' (llvmpipe's timings move by up to ±30% between runs on this shared machine).", "",
             "| scene | particles | splat floor ms | " + " | ".join("%s ms (× floor, error)" % t for t, _ in TIERS) +
@@ -451,7 +453,10 @@ def replace_section(docs_dir, heading, section):
 
 
 if __name__ == "__main__":
-    if sys.argv[1] == "--editor":
+    if sys.argv[1] == "--tiers":  # the tiers' runs alone (tiers_<scene>, cumulus_1280, aircraft_1280)
+        runs = {os.path.basename(os.path.dirname(p)): json.load(open(p)) for p in sorted(glob.glob(os.path.join(sys.argv[2], "*", "bench.json")))}
+        replace_section(sys.argv[3], "## Quality tiers", tiers_section(runs, sys.argv[2]))
+    elif sys.argv[1] == "--editor":
         replace_section(sys.argv[3], EDITOR_HEADING, editor_section(sys.argv[2]))
     elif sys.argv[1] == "--raymarch":
         replace_section(sys.argv[3], RAYMARCH_HEADING, raymarch_section(sys.argv[2]))

@@ -23,8 +23,9 @@ vec3 cubeFaceView(int face, vec3 d) {
 
 // A lookup into a light's views reads only the few numbers of the view that holds p that a cube
 // face does not share with the first: neighbouring lanes see different faces, and llvmpipe loads
-// a face's matrices lane by lane. Both ways are computed and one chosen, as llvmpipe runs both
-// sides of a branch anyway. `single` is the light's first view: a one-view light's matrices.
+// a face's matrices lane by lane. Both ways are computed and one chosen before the one fetch
+// (llvmpipe runs both sides of a branch); it pays where `count` is a compile-time constant, which
+// folds the other way away. `single` is the light's first view: a one-view light's matrices.
 // lightViewFace: the face (0 for a one-view light); lightViewPoint: p's clip coordinates (a cube
 // face's with z = 0: its planes give it) and, in w, its view depth.
 int lightViewFace(int count, vec3 lightPosition, vec3 p) { return count == 6 ? cubeFace(p - lightPosition) : 0; }
