@@ -72,6 +72,17 @@ glm::vec3 cubeFaceView(int face, const glm::vec3& d) {
     }
 }
 
+bool isCubeFaceView(int face, const LightView& v) {
+    for (int axis = 0; axis < 3; ++axis) {
+        glm::vec3 d(0.0f);
+        d[axis] = 1.0f;
+        const glm::vec3 want = cubeFaceView(face, d);
+        const glm::vec3 got = glm::vec3(v.view * glm::vec4(d, 0.0f));
+        if (glm::any(glm::greaterThan(glm::abs(got - glm::vec3(want.x, want.y, -want.z)), glm::vec3(1e-4f)))) return false;
+    }
+    return true;
+}
+
 std::vector<LightView> makeLightViews(const PunctualLight& light, const Aabb& bounds, const glm::dvec3& origin) {
     std::vector<LightView> views;
     if (bounds.empty()) return views;

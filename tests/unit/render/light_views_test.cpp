@@ -193,6 +193,22 @@ TEST(CubeFaceView, IsTheFaceViewWithoutItsMatrices) {
     }
 }
 
+TEST(CubeFaceView, ItsFacesAreCubeFacesAndOthersAreNot) {
+    assets::ResolvedLight point;
+    point.params.type = assets::LightType::Point;
+    point.position = {0.5, 1.0, -2.0};
+    const std::vector<LightView> views = makeLightViews(point, box({-3, -3, -3}, {3, 3, 3}), glm::dvec3(0.1, 0.0, 0.2));
+    ASSERT_EQ(views.size(), 6u);
+    for (int f = 0; f < 6; ++f) {
+        EXPECT_TRUE(isCubeFaceView(f, views[static_cast<std::size_t>(f)])) << "face " << f;
+        EXPECT_FALSE(isCubeFaceView((f + 1) % 6, views[static_cast<std::size_t>(f)])) << "face " << f << " read as the next";
+    }
+    LightView turned = views[0];  // +X, rolled a quarter turn about its axis
+    const glm::mat4 roll(glm::vec4(0, 1, 0, 0), glm::vec4(-1, 0, 0, 0), glm::vec4(0, 0, 1, 0), glm::vec4(0, 0, 0, 1));
+    turned.view = roll * turned.view;
+    EXPECT_FALSE(isCubeFaceView(0, turned));
+}
+
 TEST(CubeFace, PicksTheDominantAxis) {
     EXPECT_EQ(cubeFace({1.0f, 0.5f, 0.2f}), 0);
     EXPECT_EQ(cubeFace({-2.0f, 1.0f, 1.0f}), 1);

@@ -49,4 +49,8 @@ int cubeFace(const glm::vec3& direction);
 // swizzle, mirrored by the GLSL cubeFaceView: the shaders need no face's matrices.
 glm::vec3 cubeFaceView(int face, const glm::vec3& direction);
 
+// Whether view `v` looks along cube face `face` as makeLightViews' faces do (its rotation is
+// cubeFaceView's swizzle): the shaders read a six-view light's faces so, not by their matrices.
+bool isCubeFaceView(int face, const LightView& v);
+
 }  // namespace nimbus::gpu

@@ -10,6 +10,7 @@ namespace nimbus::render {
 using gpu::LightView;
 using gpu::cubeFace;
 using gpu::cubeFaceView;
+using gpu::isCubeFaceView;
 using gpu::lightViewDepth;
 
 gpu::PunctualLight punctualLight(const assets::ResolvedLight& light);

@@ -1,9 +1,11 @@
 #include "common/frame_blocks.h"
 
 #include <cstddef>
+#include <string>
 #include <utility>
 
 #include "nimbus/base/error.h"
+#include "nimbus/gpu/light_views.h"
 
 namespace nimbus::media {
 
@@ -21,11 +23,25 @@ void FrameBlocks::packScattering(const GpuScattering& scattering, GLuint environ
     directional_ = directional;
 }
 
+void checkCubeFaces(const HostShadowMaps& shadows) {
+    static const char* const kFaces[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+    for (std::size_t light = 0; light < shadows.views.size(); ++light) {
+        const auto& views = shadows.views[light];
+        if (views.size() != 6) continue;
+        for (int f = 0; f < 6; ++f)
+            if (!gpu::isCubeFaceView(f, views[static_cast<std::size_t>(f)]))
+                throw InputError("HostShadowMaps::views of light " + std::to_string(light) + ": view " + std::to_string(f) +
+                                 " is not the " + kFaces[f] + " cube face; a light's six views must be gpu::makeLightViews' "
+                                 "faces, in its order (+X -X +Y -Y +Z -Z)");
+    }
+}
+
 void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight) {
     if (host.lights.size() > kMaxHostLights)
         throw InputError(std::to_string(host.lights.size()) + " lights in one frame; the media plugin takes at most " +
                          std::to_string(kMaxHostLights));
     const HostShadowMaps* shadows = host.shadows;
+    if (shadows != nullptr) checkCubeFaces(*shadows);
     frame_ = gpu::packFrame(host.camera, host.ambient, host.background, static_cast<int>(host.lights.size()),
                             shadows ? shadows->size : 0, shadows ? shadows->pcfRadius : 0, host.fog);
     static const std::vector<std::vector<gpu::LightView>> kNoShadows;

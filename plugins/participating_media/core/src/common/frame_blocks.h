@@ -9,6 +9,11 @@
 
 namespace nimbus::media {
 
+// Refuses (InputError) a light with six shadow views that are not gpu::makeLightViews' cube faces in
+// its order: the shaders read such a light's faces by a swizzle (gpu::cubeFaceView), not their
+// matrices, so a host's faces turned otherwise would be misread without a word.
+void checkCubeFaces(const HostShadowMaps& shadows);
+
 class FrameBlocks {
 public:
     FrameBlocks();

@@ -48,7 +48,9 @@ struct HostShadowMaps {
     int size = 0;        // texels per side
     int pcfRadius = 1;   // the host's PCF radius (the media's smooth shadow does not use it)
     // Per light, in HostFrame::lights order, its views in layer order (empty: no shadow map). Views
-    // from gpu::makeLightViews around the meshes plus MediaRenderer::bounds() cover everything.
+    // from gpu::makeLightViews around the meshes plus MediaRenderer::bounds() cover everything. A
+    // point light's six views must be makeLightViews' cube faces, in its order: the media find a
+    // point's place in a face without the face's matrices (a frame with other faces is refused).
     std::vector<std::vector<gpu::LightView>> views;
 };
 
