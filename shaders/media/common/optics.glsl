@@ -17,6 +17,11 @@ float erfApprox(float x) {
     return x < 0.0 ? -y : y;
 }
 
+// erf(b) − erf(a) for a ≤ b, from each end's tail g = erfc(|x|) = P(|x|)·exp(−x²), which a caller
+// that also needs exp(−x²) has at hand: where both ends lie in one tail, the tails' difference, so
+// no 1 − erf cancels.
+float erfDifference(float a, float ga, float b, float gb) { return a >= 0.0 ? ga - gb : b <= 0.0 ? gb - ga : 2.0 - ga - gb; }
+
 // φ(α) / (1 − Φ(α)) of the standard normal (the mean of its part beyond α). For α ≥ 0 the
 // exp(−α²/2) of φ and of erfc cancel, so it stays exact far into the tail.
 float inverseMillsRatio(float alpha) {

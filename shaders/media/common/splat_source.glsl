@@ -107,17 +107,25 @@ float crossedSunVisibility(vec3 origin, vec3 dir, float tc, float beta2, float t
     float h = radius * sqrt(max(1.0 - beta2, 0.0));
     float lo = max(-h, -tc), hi = min(h, tSurface - tc);
     if (!(hi > lo)) return 1.0;
-    float middle = chordCentroid(Chord(tc, beta2 * radius * radius, h), radius, lo, hi);
+    // The kernel along the ray is exp(−(sk·u)²): its mass and centroid over [lo, hi] and the mass in
+    // front of the boundary share the ends' exponentials and erfc tails (three exp in all; llvmpipe
+    // runs every branch, so separate gaussianSegment calls cost five each).
+    float sk = sqrt(KERNEL_FALLOFF) / radius;
+    float xLo = sk * lo, xHi = sk * hi;
+    float eLo = exp(-xLo * xLo), eHi = exp(-xHi * xHi);
+    float gLo = erfcPolynomial(abs(xLo)) * eLo;
+    float total = erfDifference(xLo, gLo, xHi, erfcPolynomial(abs(xHi)) * eHi);
+    if (!(total > 0.0)) return 1.0;
+    // ∫u·e^−(sk·u)² du over ∫e^−(sk·u)² du
+    float middle = clamp((eLo - eHi) / (sk * 2.0 * HALF_SQRT_PI * total), lo, hi);
     float spread = min(radius / 3.0, 0.25 * (hi - lo));
     float a = max(middle - spread, lo), b = min(middle + spread, hi);
     vec3 base = origin + dir * tc;
-    float ma = meshShadowMargin(uFragmentSun, base + dir * a), mb = meshShadowMargin(uFragmentSun, base + dir * b);
+    // The sun is directional: one view, whose count the lookups then know.
+    float ma = meshShadowMarginOf(uFragmentSun, 1, base + dir * a), mb = meshShadowMarginOf(uFragmentSun, 1, base + dir * b);
     if ((ma > 0.0) == (mb > 0.0) || !(b > a)) return ma > 0.0 ? 1.0 : 0.0;
-    float crossing = clamp(a + (b - a) * ma / (ma - mb), lo, hi);
-    float sk = sqrt(KERNEL_FALLOFF) / radius;
-    float total = gaussianSegment(sk, lo, hi);
-    if (!(total > 0.0)) return 1.0;
-    float before = gaussianSegment(sk, lo, crossing) / total;  // the mass in front of the boundary
+    float xCross = sk * clamp(a + (b - a) * ma / (ma - mb), lo, hi);
+    float before = erfDifference(xLo, gLo, xCross, erfcPolynomial(abs(xCross)) * exp(-xCross * xCross)) / total;  // the mass in front of the boundary
     return clamp(ma > 0.0 ? before : 1.0 - before, 0.0, 1.0);
 }
 #endif
