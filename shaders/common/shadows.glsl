@@ -11,20 +11,20 @@ float shadowLookup(GpuLightView v, vec4 clip) {
     vec2 uv = ndc.xy * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || clip.w <= 0.0) return 1.0;
 #if defined(PCF_RADIUS) && PCF_RADIUS == 0
-    return texture(shadowMap, vec4(uv, v.params2.x, ndc.z));
+    return texture(shadowMap, vec4(shadowLayerUv(v, uv), v.params2.x, ndc.z));
 #else
 #ifdef PCF_RADIUS
     const int radius = PCF_RADIUS;
 #else
     int radius = frame.counts.w;
 #endif
-    vec2 texelUv = vec2(1.0 / float(frame.counts.z));
+    vec2 texelUv = vec2(1.0 / (float(frame.counts.z) * v.params.w));  // in the view's image
     float lit = 0.0;
     int y = -radius;
     do {
         int x = -radius;
         do {
-            lit += texture(shadowMap, vec4(uv + vec2(x, y) * texelUv, v.params2.x, ndc.z));
+            lit += texture(shadowMap, vec4(shadowLayerUv(v, uv + vec2(x, y) * texelUv), v.params2.x, ndc.z));
         } while (++x <= radius);
     } while (++y <= radius);
     float taps = float((2 * radius + 1) * (2 * radius + 1));

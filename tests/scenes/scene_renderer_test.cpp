@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -146,6 +147,37 @@ TEST_F(SceneRendererTest, LightOrderChangesTheImageOnlyByRounding) {
             if (difference > 1e-5) ++differing;
         }
     EXPECT_LE(differing, vertex.width * vertex.height / 200) << "worst relative difference " << worst;
+    EXPECT_EQ(context().takeGlErrors().count, 0u);
+}
+
+// A point light's six faces drawn in half of each layer's side (pointShadowScale 0.5, the balanced
+// and fast tiers') cast the box's shadow where the whole layers do: only its edge moves by a texel.
+// Lookups that missed the corner the faces are drawn in would read other texels and lose it.
+TEST_F(SceneRendererTest, PointLightFacesInPartOfTheirLayersCastTheSameShadow) {
+    render::FrameInput in = input(*gpu, false, true);
+    in.lights = {light(assets::LightType::Point, {2.0, 3.0, 1.5}, {0, -1, 0}, 40.0f)};
+    auto frame = [&](float scale, bool box) {
+        render::FrameInput f = in;
+        if (!box) f.instances.pop_back();
+        renderer->render(f, {.width = 96, .height = 72, .shadowMapSize = 512, .pointShadowScale = scale, .pcfRadius = 1}, {});
+        return renderer->readOutput();
+    };
+    // Mean |a − b| over the ground's pixels (the box's own ones excepted), over their mean radiance.
+    const assets::RgbImage noBox = frame(1.0f, false);
+    auto difference = [&](const assets::RgbImage& a, const assets::RgbImage& b) {
+        double sum = 0.0, mean = 0.0;
+        for (int y = 0; y < a.height; ++y)
+            for (int x = 0; x < a.width; ++x) {
+                if (noBox.at(x, y) == kBackground) continue;
+                sum += glm::length(a.at(x, y) - b.at(x, y));
+                mean += glm::length(b.at(x, y));
+            }
+        return sum / mean;
+    };
+    const assets::RgbImage whole = frame(1.0f, true), half = frame(0.5f, true);
+    EXPECT_GT(difference(whole, noBox), 0.02) << "the box shadows the ground";
+    std::printf("[ measured ] shadow %.4f, half against whole faces %.4f\n", difference(whole, noBox), difference(half, whole));
+    EXPECT_LT(difference(half, whole), 0.1 * difference(whole, noBox));
     EXPECT_EQ(context().takeGlErrors().count, 0u);
 }
 

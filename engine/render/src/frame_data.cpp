@@ -13,12 +13,13 @@ FrameData::FrameData()
       shadowViews_(gpu::createBuffer(kMaxLightViews * sizeof(GpuLightView), nullptr, GL_DYNAMIC_STORAGE_BIT)) {}
 
 void FrameData::update(const View& view, const assets::Environment& environment, const std::vector<assets::ResolvedLight>& lights,
-                       const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize, int pcfRadius) {
-    frame_ = gpu::packFrame(view, environment.ambient, environment.background, static_cast<int>(lights.size()), shadowMapSize, pcfRadius,
-                            fogParams(environment.fog, view.zfar));
+                       const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize, int pointShadowSize, int pcfRadius) {
+    frame_ = gpu::packFrame(view, environment.ambient, environment.background, static_cast<int>(lights.size()), shadowMapSize,
+                            pcfRadius, fogParams(environment.fog, view.zfar));
     glNamedBufferSubData(frameBuffer_.id(), 0, sizeof(GpuFrame), &frame_);
 
-    const gpu::PackedLights packed = gpu::packLights(punctualLights(lights), view.origin, shadowViews, shadowMapSize);
+    const gpu::PackedLights packed =
+        gpu::packLights(punctualLights(lights), view.origin, shadowViews, shadowMapSize, pointShadowSize);
     gpu::uploadBlock(lights_, kMaxLights, packed.lights, "lights");
     gpu::uploadBlock(shadowViews_, kMaxLightViews, packed.shadowViews, "shadow map views");
 }

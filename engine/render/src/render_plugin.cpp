@@ -17,6 +17,11 @@ const SettingField<RenderSettings> kRenderFields[] = {
     {{.key = "pcf_radius", .help = "mesh shadow PCF kernel radius in texels", .type = SettingType::Integer, .min = 0, .max = 4,
       .defaultValue = "1: 3x3 taps (fast: 0)"},
      &setInteger<&RenderSettings::pcfRadius>},
+    {{.key = "point_shadow_scale",
+      .help = "side of a point light's six shadow-map faces as a share of shadow_map_size (each face spans 90 degrees)",
+      .type = SettingType::Number, .min = 0.125, .max = 1.0, .defaultValue = "1 (balanced and fast: 0.5)",
+      .showsWith = "a point light"},
+     &setNumber<&RenderSettings::pointShadowScale>},
 };
 
 void renderFrame(ecs::World& world) {
@@ -58,6 +63,7 @@ void readRenderSettings(const Settings& settings, RenderSettings& out) {
     const bool fast = readQualityTier(settings) == QualityTier::Fast;
     out.shadowMapSize = fast ? 1024 : 0;
     out.pcfRadius = fast ? 0 : -1;
+    out.pointShadowScale = readQualityTier(settings) == QualityTier::Exact ? 0.0f : 0.5f;
     out = readFields<RenderSettings>(settings, kRenderFields, out);
 }
 

@@ -1,6 +1,7 @@
 #include "nimbus/render/scene_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "passes.h"
 
@@ -12,10 +13,16 @@ RenderSettings withDefaults(RenderSettings s) {
     if (s.height <= 0) s.height = 720;
     if (s.shadowMapSize <= 0) s.shadowMapSize = 2048;
     if (s.pcfRadius < 0) s.pcfRadius = 1;
+    if (s.pointShadowScale <= 0.0f) s.pointShadowScale = 1.0f;
     return s;
 }
 
 }  // namespace
+
+int pointShadowSize(const RenderSettings& settings) {
+    const float scale = settings.pointShadowScale > 0.0f ? std::min(settings.pointShadowScale, 1.0f) : 1.0f;
+    return std::max(static_cast<int>(std::lround(static_cast<float>(settings.shadowMapSize) * scale)), 1);
+}
 
 assets::Aabb instanceBounds(const FrameInput& input) {
     assets::Aabb bounds;
@@ -66,7 +73,7 @@ void SceneRenderer::render(const FrameInput& input, const RenderSettings& reques
 
     // Everything the shaders read per frame is known once setup is done.
     frameData_.update(context.view, input.environment, input.lights, context.shadowViews, settings.shadowMapSize,
-                      settings.pcfRadius);
+                      pointShadowSize(settings), settings.pcfRadius);
     graph.compile();
     graph.execute(timer);
     lastPasses_ = graph.activePasses();

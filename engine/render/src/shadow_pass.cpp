@@ -2,7 +2,9 @@
 // Both faces are drawn (any triangle blocks light, as in the reference); a slope-scaled polygon
 // offset plus the lookup's normal offset keep lit surfaces from shadowing themselves. MASK
 // materials cut their texels away (the same alpha test as the opaque pass), so a cutout casts the
-// shadow of what is left of it, on meshes and on the medium alike.
+// shadow of what is left of it, on meshes and on the medium alike. A point light's faces are drawn
+// in the first pointShadowSize texels of their layers' sides (the lookups scale into that corner);
+// only it and the one texel beyond it, which a lookup's bilinear footprint weighs 0, are cleared.
 #include <algorithm>
 
 #include "passes.h"
@@ -43,20 +45,25 @@ void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
         },
         [this, &context, size](const PassResources& resources, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
-            glViewport(0, 0, size, size);
             // Reversed Z; the offset pushes stored depth away from the light.
             gpu::applyPipeline({.depth = {.test = true, .compare = GL_GREATER, .write = true},
                                 .polygonOffset = true,
                                 .offsetFactor = -1.5f,
                                 .offsetUnits = -2.0f});
             int layer = 0;
-            for (const auto& views : context.shadowViews) {
-                for (const auto& view : views) {
+            for (std::size_t light = 0; light < context.shadowViews.size(); ++light) {
+                const bool point = context.input.lights[light].params.type == assets::LightType::Point;
+                const int side = point ? pointShadowSize(context.settings) : size;
+                glViewport(0, 0, side, side);
+                for (const auto& view : context.shadowViews[light]) {
                     glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, resources.id(d.map), 0, layer++);
                     glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
                     glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
                     const float clearDepth = 0.0f;
+                    glEnable(GL_SCISSOR_TEST);
+                    glScissor(0, 0, std::min(side + 1, size), std::min(side + 1, size));
                     glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &clearDepth);
+                    glDisable(GL_SCISSOR_TEST);
                     auto pick = [this, &view](const GpuMaterial& material, const GpuPrimitive& primitive) {
                         const unsigned features = shadowFeatures(materialFeatures(material, primitive));
                         const GLuint id = program(features).id();

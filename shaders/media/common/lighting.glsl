@@ -36,7 +36,7 @@ float mediumMeshVisibility(int lightIndex, vec3 p, float softness) {
                 lit += 1.0;
                 continue;
             }
-            float occluder = shadowTexelDepth(v, texture(uShadowDepth, vec3(tapUv, v.params2.x)).r);
+            float occluder = shadowTexelDepth(v, texture(uShadowDepth, vec3(shadowLayerUv(v, tapUv), v.params2.x)).r);
             lit += 0.5 * (1.0 + erfApprox((occluder - receiver) / width));
         }
     }

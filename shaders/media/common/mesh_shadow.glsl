@@ -26,7 +26,7 @@ float meshShadowMarginOf(int lightIndex, int count, vec3 p) {
     GpuLightView v = shadowViews[first + face];
     vec2 uv;
     if (!lightViewClipUv(clip, uv)) return 1e30;
-    return shadowTexelDepth(v, texture(uShadowDepth, vec3(uv, v.params2.x)).r) - receiver;
+    return shadowTexelDepth(v, texture(uShadowDepth, vec3(shadowLayerUv(v, uv), v.params2.x)).r) - receiver;
 }
 
 float meshShadowMargin(int lightIndex, vec3 p) { return meshShadowMarginOf(lightIndex, int(lights[lightIndex].spot.w), p); }

@@ -6,8 +6,9 @@
 //
 // The frames are of a wing through a cloud, which shows every key's effect but those whose
 // declaration says they need more of a scene (SettingSpec::showsWith: a lamp inside the medium, a
-// reduced media target); those may show it in the other scenes: a lamp inside a medium, and a
-// wing seen close, whose billboards are large enough for media_scale=auto to reduce. A key that shows only
+// reduced media target, a point light); those may show it in the other scenes: a lamp inside a
+// medium, a wing seen close, whose billboards are large enough for media_scale=auto to reduce, and
+// a campfire, whose point light casts the rocks' shadows. A key that shows only
 // after the camera moves (kShowsWithMovingCamera) is judged on a second frame, drawn after one
 // through the camera turned half a degree.
 #include <gtest/gtest.h>
@@ -38,11 +39,13 @@ struct WalkScene {
 
 std::vector<WalkScene> walkScenes() {
     // A wing through a cloud (soft particles, block seams, multiple scattering), a lamp inside a
-    // medium (exact_near_lamps, lamp slices), and a wing seen from close enough that
-    // media_scale=auto reduces the target at this size (the upsampling keys).
+    // medium (exact_near_lamps, lamp slices), a wing seen from close enough that
+    // media_scale=auto reduces the target at this size (the upsampling keys), and a point light
+    // whose cube faces hold rocks' shadows (point_shadow_scale).
     return {{"cumulus_aircraft", std::make_shared<const assets::Scene>(assets::loadScene(contentScene("cumulus_aircraft")))},
             {"unseen_point_inside_dense", std::make_shared<const assets::Scene>(assets::loadScene(mediaScene("unseen_point_inside_dense")))},
-            {"wing_close", std::make_shared<const assets::Scene>(assets::loadScene(mediaScene("wing_close")))}};
+            {"wing_close", std::make_shared<const assets::Scene>(assets::loadScene(mediaScene("wing_close")))},
+            {"campfire", std::make_shared<const assets::Scene>(assets::loadScene(contentScene("campfire")))}};
 }
 
 // The declarations a session makes (what `sandbox settings` lists).

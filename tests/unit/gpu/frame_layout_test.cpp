@@ -7,6 +7,7 @@
 
 #include "gl_test_context.h"
 #include "glsl_layout.h"
+#include "nimbus/gpu/light_views.h"
 #include "nimbus/gpu/shader_program.h"
 
 namespace nimbus::gpu {
@@ -76,6 +77,29 @@ TEST_F(FrameLayout, BlocksSitAtTheirBindingPoints) {
     EXPECT_EQ(binding("Frame"), static_cast<GLint>(kFrameUniformBinding));
     EXPECT_EQ(binding("Lights"), static_cast<GLint>(kLightsBinding));
     EXPECT_EQ(binding("ShadowViews"), static_cast<GLint>(kShadowViewsBinding));
+}
+
+// A point light's faces carry the share of the layer's side they are drawn in (shadow_views.glsl
+// shadowLayerUv) and texels as large as that side makes them; other views the whole layer.
+TEST(PackLights, PointFacesCarryTheShareOfTheLayerTheyAreDrawnIn) {
+    PunctualLight sun, lamp;
+    sun.kind = LightKind::Directional;
+    sun.direction = glm::dvec3(0.0, -1.0, 0.0);
+    lamp.kind = LightKind::Point;
+    lamp.position = glm::dvec3(0.0, 1.0, 0.0);
+    const Aabb bounds{glm::dvec3(-2.0), glm::dvec3(2.0)};
+    const std::vector<std::vector<LightView>> views{makeLightViews(sun, bounds, glm::dvec3(0.0)), makeLightViews(lamp, bounds, glm::dvec3(0.0))};
+    const PackedLights half = packLights({sun, lamp}, glm::dvec3(0.0), views, 1024, 512);
+    ASSERT_EQ(half.shadowViews.size(), 7u);
+    EXPECT_EQ(half.shadowViews[0].params.w, 1.0f);
+    EXPECT_FLOAT_EQ(half.shadowViews[0].params2.y, 2.0f * views[0][0].halfExtent.x / 1024.0f);
+    for (std::size_t f = 1; f < 7; ++f) {
+        EXPECT_EQ(half.shadowViews[f].params.w, 0.5f) << f;
+        EXPECT_FLOAT_EQ(half.shadowViews[f].params2.y, 2.0f * views[1][f - 1].halfExtent.x / 512.0f) << f;
+        EXPECT_EQ(half.shadowViews[f].params2.x, static_cast<float>(f)) << "one layer a face";
+    }
+    const PackedLights whole = packLights({sun, lamp}, glm::dvec3(0.0), views, 1024);
+    for (const GpuLightView& v : whole.shadowViews) EXPECT_EQ(v.params.w, 1.0f);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ HostFrame hostFrame(const render::FrameContext& context, HostShadowMaps& shadows
     frame.fog = render::fogParams(context.input.environment.fog, context.view.zfar);
     shadows.texture = 0;
     shadows.size = context.settings.shadowMapSize;
+    shadows.pointFaceSize = render::pointShadowSize(context.settings);
     shadows.pcfRadius = context.settings.pcfRadius;
     shadows.views = context.shadowViews;
     frame.shadows = &shadows;

@@ -66,7 +66,9 @@ struct alignas(16) GpuLight {
 struct alignas(16) GpuLightView {
     glm::mat4 view;
     glm::mat4 viewProjection;
-    glm::vec4 params;   // x: perspective, y: depth near, z: depth far, w: slice count (transmittance views)
+    // x: perspective, y: depth near, z: depth far; w: slice count (transmittance views), or the share of
+    // its layer's side a shadow view is drawn in, from the layer's first texel (1: all of it)
+    glm::vec4 params;
     glm::vec4 params2;  // x: first texture layer, y: texel size in metres at depth 1 (shadow bias), zw: half extent
 };
 
@@ -77,13 +79,15 @@ GpuLight packLight(const PunctualLight& light, const glm::dvec3& origin, int fir
 GpuLightView packLightView(const LightView& view, int firstLayer, float sliceCount, float texels);
 
 // Every light with its shadow views (per light, in layer order; a light without views, or past the
-// end of `shadowViews`, has no shadow map), as the Lights and ShadowViews blocks hold them.
+// end of `shadowViews`, has no shadow map), as the Lights and ShadowViews blocks hold them. A point
+// light's six faces are drawn in the first `pointFaceSize` texels of their layers' sides (0: all
+// `shadowMapSize`).
 struct PackedLights {
     std::vector<GpuLight> lights;
     std::vector<GpuLightView> shadowViews;
 };
 PackedLights packLights(const std::vector<PunctualLight>& lights, const glm::dvec3& origin,
-                        const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize);
+                        const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize, int pointFaceSize = 0);
 
 // Writes `count` items of `itemSize` bytes at the start of `buffer`; throws InputError naming
 // `what` when there are more than the block holds (`capacity`).

@@ -33,7 +33,7 @@ class FrameData {
 public:
     FrameData();
     void update(const View& view, const assets::Environment& environment, const std::vector<assets::ResolvedLight>& lights,
-                const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize, int pcfRadius);
+                const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize, int pointShadowSize, int pcfRadius);
     void bind() const;  // binds the blocks at their binding points
 
     const GpuFrame& frame() const { return frame_; }

@@ -35,8 +35,15 @@ struct RenderSettings {
     int width = 0;           // 0: 1280
     int height = 0;          // 0: 720
     int shadowMapSize = 0;   // 0: 2048
+    // A point light's cube faces' side as a share of shadowMapSize, each face drawn in the first
+    // texels of its layer. A face spans 90°, so half the side still keeps finer texels than a sun's
+    // one view over the whole scene. 0: 1.
+    float pointShadowScale = 0.0f;
     int pcfRadius = -1;      // −1: 1 (3×3 taps)
 };
+
+// A point light's cube faces' side in texels (RenderSettings::pointShadowScale of shadowMapSize).
+int pointShadowSize(const RenderSettings& settings);
 
 struct FrameInput {
     const GpuScene* gpuScene = nullptr;

@@ -45,7 +45,8 @@ void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightVie
     frame_ = gpu::packFrame(host.camera, host.ambient, host.background, static_cast<int>(host.lights.size()),
                             shadows ? shadows->size : 0, shadows ? shadows->pcfRadius : 0, host.fog);
     static const std::vector<std::vector<gpu::LightView>> kNoShadows;
-    gpu::PackedLights packed = gpu::packLights(host.lights, host.camera.origin, shadows ? shadows->views : kNoShadows, shadows ? shadows->size : 0);
+    gpu::PackedLights packed = gpu::packLights(host.lights, host.camera.origin, shadows ? shadows->views : kNoShadows, shadows ? shadows->size : 0,
+                                               shadows ? shadows->pointFaceSize : 0);
     lights_ = std::move(packed.lights);
     shadowViews_ = std::move(packed.shadowViews);
     perLight_.assign(host.lights.size(), glm::ivec4(-1, 0, 0, 0));

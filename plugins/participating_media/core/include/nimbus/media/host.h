@@ -52,6 +52,10 @@ struct HostShadowMaps {
     // point light's six views must be makeLightViews' cube faces, in its order: the media find a
     // point's place in a face without the face's matrices (a frame with other faces is refused).
     std::vector<std::vector<gpu::LightView>> views;
+    // Texels per side of a point light's faces, each drawn from its layer's first texel (0: size).
+    // The media read a face only there, never the texel beyond it with a weight above 0. Last, so
+    // a host's positional initialiser without it stays valid.
+    int pointFaceSize = 0;
 };
 
 // A mesh's bounds in world space for `blocks` mode: its local box carried by the mesh's rotation
