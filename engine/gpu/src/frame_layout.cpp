@@ -56,15 +56,18 @@ GpuLightView packLightView(const LightView& v, int firstLayer, float sliceCount,
     return g;
 }
 
+int shadowViewSide(LightKind kind, int shadowMapSize, int pointFaceSize) {
+    return kind == LightKind::Point && pointFaceSize > 0 ? std::min(pointFaceSize, shadowMapSize) : shadowMapSize;
+}
+
 PackedLights packLights(const std::vector<PunctualLight>& lights, const glm::dvec3& origin,
                         const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize, int pointFaceSize) {
     PackedLights out;
-    const int faceSize = pointFaceSize > 0 ? std::min(pointFaceSize, shadowMapSize) : shadowMapSize;
     for (std::size_t i = 0; i < lights.size(); ++i) {
         const std::size_t views = i < shadowViews.size() ? shadowViews[i].size() : 0;
         const int first = views == 0 ? -1 : static_cast<int>(out.shadowViews.size());
         out.lights.push_back(packLight(lights[i], origin, first, static_cast<int>(views)));
-        const int side = lights[i].kind == LightKind::Point ? faceSize : shadowMapSize;
+        const int side = shadowViewSide(lights[i].kind, shadowMapSize, pointFaceSize);
         const float share = shadowMapSize > 0 ? static_cast<float>(side) / static_cast<float>(shadowMapSize) : 1.0f;
         for (std::size_t v = 0; v < views; ++v)
             out.shadowViews.push_back(

@@ -13,7 +13,6 @@ RenderSettings withDefaults(RenderSettings s) {
     if (s.height <= 0) s.height = 720;
     if (s.shadowMapSize <= 0) s.shadowMapSize = 2048;
     if (s.pcfRadius < 0) s.pcfRadius = 1;
-    if (s.pointShadowScale <= 0.0f) s.pointShadowScale = 1.0f;
     return s;
 }
 

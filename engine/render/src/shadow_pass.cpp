@@ -11,6 +11,7 @@
 
 #include "material_binding.h"
 
+#include "nimbus/gpu/frame_layout.h"
 #include "nimbus/gpu/shader_program.h"
 
 namespace nimbus::render {
@@ -52,8 +53,8 @@ void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
                                 .offsetUnits = -2.0f});
             int layer = 0;
             for (std::size_t light = 0; light < context.shadowViews.size(); ++light) {
-                const bool point = context.input.lights[light].params.type == assets::LightType::Point;
-                const int side = point ? pointShadowSize(context.settings) : size;
+                const int side = gpu::shadowViewSide(punctualLight(context.input.lights[light]).kind, size,
+                                                     pointShadowSize(context.settings));
                 glViewport(0, 0, side, side);
                 for (const auto& view : context.shadowViews[light]) {
                     glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, resources.id(d.map), 0, layer++);

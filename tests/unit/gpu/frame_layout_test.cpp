@@ -100,6 +100,12 @@ TEST(PackLights, PointFacesCarryTheShareOfTheLayerTheyAreDrawnIn) {
     }
     const PackedLights whole = packLights({sun, lamp}, glm::dvec3(0.0), views, 1024);
     for (const GpuLightView& v : whole.shadowViews) EXPECT_EQ(v.params.w, 1.0f);
+    // The side the shadow pass draws in: only a point light's faces, never past the layer.
+    EXPECT_EQ(shadowViewSide(LightKind::Point, 1024, 512), 512);
+    EXPECT_EQ(shadowViewSide(LightKind::Spot, 1024, 512), 1024);
+    EXPECT_EQ(shadowViewSide(LightKind::Directional, 1024, 512), 1024);
+    EXPECT_EQ(shadowViewSide(LightKind::Point, 1024, 0), 1024);
+    EXPECT_EQ(shadowViewSide(LightKind::Point, 1024, 4096), 1024);
 }
 
 }  // namespace

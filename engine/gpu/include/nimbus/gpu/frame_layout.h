@@ -88,6 +88,10 @@ struct PackedLights {
 };
 PackedLights packLights(const std::vector<PunctualLight>& lights, const glm::dvec3& origin,
                         const std::vector<std::vector<LightView>>& shadowViews, int shadowMapSize, int pointFaceSize = 0);
+// The side, in texels from its layer's first, that a light's shadow views are drawn in: a point
+// light's faces `pointFaceSize` (0: all), every other view the whole `shadowMapSize`. The shadow
+// pass draws by it and packLights tells the lookups.
+int shadowViewSide(LightKind kind, int shadowMapSize, int pointFaceSize);
 
 // Writes `count` items of `itemSize` bytes at the start of `buffer`; throws InputError naming
 // `what` when there are more than the block holds (`capacity`).
