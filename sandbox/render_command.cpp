@@ -151,6 +151,7 @@ void addMediaStats(ecs::App& app, nlohmann::json& stats) {
     stats["media_particles"] = s.particles;
     stats["media_slices"] = s.slices;
     stats["media_slice_views"] = s.sliceViews;
+    stats["media_slice_crops"] = s.slicesCropped;
     stats["media_multiple_scattering"] = s.multipleScattering;
     stats["media_rescatter"] = s.rescatter;
     // What the "auto" settings chose this frame.

@@ -11,7 +11,8 @@
 #include "common/shadows.glsl"
 #include "common/material.glsl"
 #include "common/surface_brdf.glsl"
-// MEDIA_LIGHT_TRANSMITTANCE: the media plugin's light slices (render::MeshShadingInput).
+// MEDIA_LIGHT_TRANSMITTANCE: the media plugin's light slices (render::MeshShadingInput); MEDIA_SLICE_CROPS with it:
+// some light's slices come with a crop (media_render_extension.cpp).
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
 #include "media/host/light_transmittance.glsl"
 #endif
@@ -27,6 +28,9 @@ in vec4 vShadowClip[VERTEX_LIGHTS];
 in vec4 vShadowOffset[VERTEX_LIGHTS];
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
 in vec4 vSliceClip[VERTEX_LIGHTS];
+#ifdef MEDIA_SLICE_CROPS
+in vec4 vCropClip[VERTEX_LIGHTS];
+#endif
 in float vSliceDepth[VERTEX_LIGHTS];
 #endif
 #endif
@@ -64,7 +68,12 @@ vec3 vertexLight(int i, SurfaceBrdf brdf, vec3 n, vec3 v) {
     float transmittance = 1.0;
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
     int view = mediaLightSlices[i].x;
+#ifdef MEDIA_SLICE_CROPS
+    // A crop's view follows its whole one; vCropClip lies outside every crop where there is none.
+    float depth = mediaCroppedOpticalDepthAt(mediaSliceViews[max(view, 0)], mediaSliceViews[max(view, 0) + 1], vSliceClip[i], vCropClip[i], vSliceDepth[i]);
+#else
     float depth = mediaViewOpticalDepthAt(mediaSliceViews[max(view, 0)], vSliceClip[i], vSliceDepth[i]);
+#endif
     if (mediaSliceCount.x != 0 && view >= 0) transmittance = exp(-depth);
 #endif
     // Which kind the light is is known here (VERTEX_DIRECTIONAL_LIGHTS): a sun's fragments skip the

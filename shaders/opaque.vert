@@ -17,6 +17,9 @@ out vec4 vShadowOffset[VERTEX_LIGHTS];  // the front face's; a back face (double
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
 #include "media/host/light_transmittance.glsl"
 out vec4 vSliceClip[VERTEX_LIGHTS];
+#ifdef MEDIA_SLICE_CROPS
+out vec4 vCropClip[VERTEX_LIGHTS];
+#endif
 out float vSliceDepth[VERTEX_LIGHTS];
 #endif
 #endif
@@ -70,9 +73,14 @@ void main() {
         vec3 offset = normalize(vNormal) * shadowOffset(shadow, max(-(shadow.view * p).z, 0.0));
         vShadowOffset[i] = shadow.viewProjection * vec4(offset, 0.0);
 #ifdef MEDIA_LIGHT_TRANSMITTANCE
-        GpuLightView slices = mediaSliceViews[max(mediaLightSlices[i].x, 0)];
+        ivec4 sliceViews = mediaLightSlices[i];
+        GpuLightView slices = mediaSliceViews[max(sliceViews.x, 0)];
         vSliceClip[i] = slices.viewProjection * p;
         vSliceDepth[i] = -(slices.view * p).z;
+#ifdef MEDIA_SLICE_CROPS
+        // A crop's clip coordinates (light_transmittance.glsl), or a point outside any crop.
+        vCropClip[i] = sliceViews.y == 2 ? mediaSliceViews[sliceViews.x + 1].viewProjection * p : vec4(2.0, 2.0, 0.0, 1.0);
+#endif
 #endif
     }
 #endif

@@ -4,6 +4,8 @@
 // shared corner, with no surface on it. block_composite.frag's BLOCK_LIT_IMPOSTOR build reads it
 // back bilinearly, premultiplied (rgb: radiance × opacity, a: opacity), and adds the fog and the
 // pixel's own opacity.
+// Once per particle or impostor texel: reading the slice crops costs little here (light_transmittance.glsl).
+#define MEDIA_SLICE_CROPS
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"

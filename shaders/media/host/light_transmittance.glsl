@@ -18,17 +18,45 @@ layout(binding = MEDIA_SLICES_UNIT) uniform sampler2DArray mediaSlices;
 
 // The optical depth one light view's slices hold at a point with clip coordinates `clip` and view
 // depth `depth` in that view. Both are linear in the point, so a host may interpolate them per vertex.
-float mediaViewOpticalDepthAt(GpuLightView v, vec4 clip, float depth) {
+// `params`, `firstLayer`: the view's params and params2.x.
+float mediaSliceOpticalDepthAt(vec4 params, float firstLayer, vec4 clip, float depth) {
     vec2 uv;
     if (!lightViewClipUv(clip, uv)) return 0.0;  // slices cover the medium: outside them there is none
-    int K = int(v.params.w);
-    float s = (depth - v.params.y) / (v.params.z - v.params.y) * float(K);
+    int K = int(params.w);
+    float s = (depth - params.y) / (params.z - params.y) * float(K);
     if (s <= 0.0) return 0.0;
     // The enclosing slices, or the last one past the medium.
     int k = min(int(floor(s)), K - 1);
-    vec4 pairs = texture(mediaSlices, vec3(uv, v.params2.x + float(k / 2)));
+    vec4 pairs = texture(mediaSlices, vec3(uv, firstLayer + float(k / 2)));
     vec2 ends = (k & 1) == 0 ? pairs.xy : pairs.zw;
     return s >= float(K) ? ends.y : mix(ends.x, ends.y, s - float(k));
+}
+
+float mediaViewOpticalDepthAt(GpuLightView v, vec4 clip, float depth) { return mediaSliceOpticalDepthAt(v.params, v.params2.x, clip, depth); }
+
+// MEDIA_SLICE_CROPS: the lookups below by light read a light's crop (count 2) where it holds p. It
+// is a define, not a test of the count, because llvmpipe pays for the test's arithmetic on every
+// lookup of every light (the exact tier's fragments: 8%); without it a light with a crop reads its
+// whole view, which holds the same light, only coarser.
+// A directional light may come with two views (count 2): the whole medium's, then a finer crop over
+// where meshes reach into it: the same orthographic view shifted and narrowed across, with the same
+// view depth and near plane (media planning/slice_crop.h). A point inside the crop's footprint and
+// before its far plane reads the crop. `cropClip`: p's clip coordinates in the crop, `depth` its
+// view depth (the same in both).
+bool mediaInsideCrop(GpuLightView crop, vec4 cropClip, float depth) {
+    return all(lessThanEqual(abs(cropClip.xy), vec2(cropClip.w))) && depth <= crop.params.z;
+}
+
+// The crop's clip coordinates from the whole view's (w = 1): a scale and an offset across, cheaper
+// than the crop's matrix for every lookup that might fall in it.
+vec4 mediaCropClip(GpuLightView whole, GpuLightView crop, vec4 clip) {
+    vec2 scale = whole.params2.zw / crop.params2.zw;
+    return vec4(clip.xy * scale + (crop.viewProjection[3].xy - whole.viewProjection[3].xy * scale), 0.0, 1.0);
+}
+
+float mediaCroppedOpticalDepthAt(GpuLightView whole, GpuLightView crop, vec4 clip, vec4 cropClip, float depth) {
+    bool inside = mediaInsideCrop(crop, cropClip, depth);
+    return mediaSliceOpticalDepthAt(inside ? crop.params : whole.params, inside ? crop.params2.x : whole.params2.x, inside ? cropClip : clip, depth);
 }
 
 // The optical depth one light view's slices hold at p.
@@ -40,19 +68,37 @@ float mediaViewOpticalDepth(GpuLightView v, vec3 p) {
 int mediaLightSliceView(int light, vec3 lightPosition, vec3 p) {
     if (mediaSliceCount.x == 0) return -1;
     ivec4 s = mediaLightSlices[light];
+#ifdef MEDIA_SLICE_CROPS
+    if (s.y == 2) {
+        GpuLightView whole = mediaSliceViews[s.x];
+        return mediaInsideCrop(mediaSliceViews[s.x + 1], mediaCropClip(whole, mediaSliceViews[s.x + 1], whole.viewProjection * vec4(p, 1.0)),
+                               -(whole.view * vec4(p, 1.0)).z) ? s.x + 1 : s.x;
+    }
+#endif
     return s.x < 0 ? -1 : lightViewIndex(s.x, s.y, lightPosition, p);
 }
 
 // The view's matrices are its light's first view's (lightViewPoint): a cube face's are not read.
-// `count`: the light's slice view count (1, or 6 for a point light), a constant where the caller
-// knows it.
+// `count`: the light's slice view count (1, 2 with a crop, or 6 for a point light), a constant
+// where the caller knows it.
 float mediaOpticalDepthOf(int light, int count, vec3 lightPosition, vec3 p) {
     int first = mediaLightSlices[light].x;
     if (mediaSliceCount.x == 0 || first < 0) return 0.0;
     int face = lightViewFace(count, lightPosition, p);
     float depth;
     vec4 clip = lightViewPoint(mediaSliceViews[first], count, face, lightPosition, p, depth);
-    return mediaViewOpticalDepthAt(mediaSliceViews[first + face], clip, depth);
+    vec4 params = mediaSliceViews[first + face].params;
+    float layer = mediaSliceViews[first + face].params2.x;
+#ifdef MEDIA_SLICE_CROPS
+    if (count == 2) {  // one fetch either way: llvmpipe runs both sides of a branch
+        vec4 cropClip = mediaCropClip(mediaSliceViews[first], mediaSliceViews[first + 1], clip);
+        bool inside = mediaInsideCrop(mediaSliceViews[first + 1], cropClip, depth);
+        params = inside ? mediaSliceViews[first + 1].params : params;
+        layer = inside ? mediaSliceViews[first + 1].params2.x : layer;
+        clip = inside ? cropClip : clip;
+    }
+#endif
+    return mediaSliceOpticalDepthAt(params, layer, clip, depth);
 }
 
 float mediaOpticalDepth(int light, vec3 lightPosition, vec3 p) {

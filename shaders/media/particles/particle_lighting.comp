@@ -16,6 +16,8 @@
 // LIGHTING_EXACT shades each ray as particles.frag shades a pixel; otherwise light is taken at the
 // ray's shading point: phase, the mesh shadow map with Bass and Anderson's smooth weighting over the
 // particle's depth, and the slices' transmittance integrated over the layer.
+// Once per particle or impostor texel: reading the slice crops costs little here (light_transmittance.glsl).
+#define MEDIA_SLICE_CROPS
 #include "media/bindings.glsl"
 layout(local_size_x = 64) in;
 #define SEGMENT_SKIPS_LIGHT litPerFragment

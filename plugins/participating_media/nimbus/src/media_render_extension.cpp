@@ -41,6 +41,9 @@ void MediaRenderExtension::beforeOpaque(render::FrameGraph& graph, render::Frame
     const GLuint views = frame_.blocks != nullptr ? renderer_.sliceViewsBlock() : 0;
     context.meshShading.push_back({"MEDIA_LIGHT_TRANSMITTANCE", {{kSlicesUnit, frame_.slices}},
                                    [views] { glBindBufferBase(GL_UNIFORM_BUFFER, kSliceViewsBinding, views); }});
+    // A light with a slice crop (slice_crop): its meshes read the crop too, at a varying's cost
+    // that frames without one do not pay (shaders/opaque.vert).
+    if (renderer_.stats().slicesCropped > 0) context.meshShading.push_back({"MEDIA_SLICE_CROPS", {}, {}});
 }
 
 void MediaRenderExtension::afterOpaque(render::FrameGraph& graph, render::FrameContext& context) {

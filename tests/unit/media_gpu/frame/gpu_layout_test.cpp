@@ -66,7 +66,10 @@ TEST_F(MediaGpuLayout, SliceViewsMatchGpuSliceViews) {
     // The host include as a host's mesh shader sees it, and inside the plugin's own programs.
     const gpu::Program host = gpu::compileProgram({.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = {"MEDIA_LIGHT_TRANSMITTANCE"}});
     const gpu::Program particles = gpu::compileProgram({.vertex = "media/particles/particles.vert", .fragment = "media/particles/particles.frag"});
-    for (GLuint program : {host.id(), particles.id()}) {
+    // A sun from the vertex stage, its slices with a crop (slice_crop).
+    const gpu::Program cropped = gpu::compileProgram(
+        {.vertex = "opaque.vert", .fragment = "opaque.frag", .defines = {"MEDIA_LIGHT_TRANSMITTANCE", "MEDIA_SLICE_CROPS", "VERTEX_LIGHTS 1", "VERTEX_DIRECTIONAL_LIGHTS 1u"}});
+    for (GLuint program : {host.id(), particles.id(), cropped.id()}) {
         const std::pair<const char*, std::size_t> members[] = {
             {"mediaSliceCount", offsetof(GpuSliceViews, count)},
             {"mediaLightSlices[0]", offsetof(GpuSliceViews, perLight)},

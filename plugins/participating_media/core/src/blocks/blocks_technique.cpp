@@ -348,6 +348,7 @@ BlocksSettings BlocksSettings::forTier(QualityTier tier) {
 TechniqueEntry blocksTechnique() {
     return {.name = "blocks",
             .help = "impostors of particle blocks composited back to front, cut where a mesh reaches them",
+            .sliceCrops = true,
             .edges = true,
             .settings = specsOf(kBlocksFields),
             // Where a mesh reaches into the medium, fast keeps balanced's slice detail and twice fast's

@@ -40,7 +40,7 @@ bool sliceResolutionAuto(const MediaRenderSettings& s) { return s.sliceTexelsPer
 
 bool edgesRedrawn(const MediaRenderSettings& s) { return offscreenMedia(s) && !s.upsampleOnly; }
 
-enum class Acts { Everywhere, LitBySlices, SliceDeposit, MultipleScattering, Edges };
+enum class Acts { Everywhere, LitBySlices, SliceDeposit, SliceCrop, MultipleScattering, Edges };
 
 struct SharedField {
     SettingField<MediaRenderSettings> field;
@@ -68,6 +68,13 @@ const SharedField kSharedFields[] = {
        .actsWhen = "with slice_resolution=auto"},
       &setSliceDetail, &sliceResolutionAuto},
      Acts::LitBySlices},
+    {{{.key = "slice_crop",
+       .help = "where a mesh reaches into the medium, a second, finer light-slice view of each directional light over the "
+               "meshes' overlap with it, read there (off: the whole view's slices everywhere)",
+       .type = SettingType::Boolean, .defaultValue = "off",
+       .actsWhen = "with slice_resolution=auto and a mesh reaching into the medium"},
+      &setBoolean<&MediaRenderSettings::sliceCrop>, &sliceResolutionAuto},
+     Acts::SliceCrop},
     {{{.key = "slice_deposit",
        .help = "light slices drawn as one float per particle and slab, then summed; auto: on unless a point or spot light's "
                "views are among them",
@@ -179,6 +186,7 @@ void declareMediaSettings(Settings& settings, const TechniqueTable& techniques) 
                 if (shared.field.acts(sharedForTier(static_cast<QualityTier>(t)))) spec.tiers |= 1u << t;
         for (const TechniqueEntry& e : techniques.entries())
             if ((shared.acts == Acts::LitBySlices && e.lightSlices) || (shared.acts == Acts::SliceDeposit && e.sliceDeposit) ||
+                (shared.acts == Acts::SliceCrop && e.sliceCrops) ||
                 (shared.acts == Acts::MultipleScattering && e.multipleScattering) || (shared.acts == Acts::Edges && e.edges))
                 spec.modes.push_back(e.name);
         settings.declare(spec);

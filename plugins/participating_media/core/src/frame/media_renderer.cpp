@@ -11,6 +11,7 @@
 #include "nimbus/media/gpu_bindings.h"
 #include "nimbus/media/slice_plan.h"
 #include "particles/splat_floor.h"
+#include "planning/slice_crop.h"
 #include "slices/light_slice_pairs_pass.h"
 #include "upsample/media_depth_used_pass.h"
 #include "upsample/media_edge_stencil_pass.h"
@@ -161,6 +162,11 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
     const float detail = nearMeshes && settings_.sliceTexelsPerRadius > 0.0f && settings_.sliceTexelsPerRadiusNearMeshes > 0.0f
                              ? settings_.sliceTexelsPerRadiusNearMeshes
                              : settings_.sliceTexelsPerRadius;
+    // With slice_crop, where a mesh reaches into the medium and the resolution is automatic, a
+    // directional light takes a second, finer view over the meshes' overlap (planning/slice_crop.h).
+    const bool cropped = nearMeshes && detail > 0.0f && settings_.sliceCrop && techniques_.at(settings_.mode).sliceCrops;
+    const double maxRadius = cropped && !particles_->radius.empty() ? *std::max_element(particles_->radius.begin(), particles_->radius.end()) : 0.0;
+    stats_.slicesCropped = 0;
     int layers = 0, resolution = settings_.sliceResolution;
     if (detail > 0.0f) resolution = 0;  // automatic: the largest any view needs
     const glm::dvec3 origin = context.host.camera.origin;
@@ -172,7 +178,12 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
             if (glm::length(nearest - light.position) >= light.range) continue;  // out of reach
         }
         const auto lightViews = gpu::makeLightViews(light, shared.bounds, origin);
-        perLight[i] = glm::ivec2(static_cast<int>(shared.sliceViews.size()), static_cast<int>(lightViews.size()));
+        const int first = static_cast<int>(shared.sliceViews.size());
+        const auto add = [&](const gpu::LightView& view, int slices, int own) {
+            shared.sliceViews.push_back({view, glm::vec3(light.position - origin), slices, layers, own});
+            layers += (slices + 3) / 4;
+            stats_.slices = std::max(stats_.slices, slices);
+        };
         for (auto view : lightViews) {
             const SliceEstimate estimate = estimateSlices(*particles_, *volumes_, view, origin);
             const int slices = fixedSlices > 0 ? std::clamp(fixedSlices, kMinSlices, kMaxSlices) : estimate.slices;
@@ -183,10 +194,15 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
                 resolution = std::max(resolution, sliceResolutionFor(estimate, view, detail));
                 if (view.perspective) own = sliceResolutionFor(estimate, view, detail, kMinLampSliceResolution);
             }
-            shared.sliceViews.push_back({view, glm::vec3(light.position - origin), slices, layers, own});
-            layers += (slices + 3) / 4;
-            stats_.slices = std::max(stats_.slices, slices);
+            add(view, slices, own);
+            // The crop follows its whole view, the light's second (light_transmittance.glsl).
+            if (cropped && lightViews.size() == 1)
+                if (const auto crop = meshCropView(view, slices, context.host.occluders, shared.bounds, maxRadius, origin)) {
+                    add(crop->view, crop->slices, 0);
+                    ++stats_.slicesCropped;
+                }
         }
+        perLight[i] = glm::ivec2(first, static_cast<int>(shared.sliceViews.size()) - first);
     }
     shared.sliceResolution = resolution;
 }

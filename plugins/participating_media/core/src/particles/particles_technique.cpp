@@ -193,6 +193,7 @@ TechniqueEntry particlesTechnique() {
     return {.name = "particles",
             .help = "sorted soft billboards, each a closed-form slab of its kernel lit through the light slices",
             .sliceDeposit = true,
+            .sliceCrops = true,
             .edges = true,
             .drawsOver = true,
             .settings = specsOf(kParticlesFields),

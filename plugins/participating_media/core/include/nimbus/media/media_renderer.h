@@ -34,6 +34,7 @@ struct MediaFrameStats {
     int slices = 0;            // per light view, this frame
     int sliceResolution = 0;   // texels per side, this frame
     int sliceViews = 0;        // light views that got slices
+    int slicesCropped = 0;     // of them, crops over where meshes reach into the medium (slice_crop)
     float mediaScale = 1.0f;   // the media target's resolution relative to the frame, this frame
     std::string mode;          // the technique that drew the frame
     bool multipleScattering = false;  // the multiple model's grid was read (not: single, or negligible)

@@ -35,6 +35,10 @@ struct MediaRenderSettings {
     // Slices as one float per particle and slab, then a running sum (the same values as the exact
     // pass within float rounding); auto: unless a lamp's views are among them.
     SliceDeposit sliceDeposit = SliceDeposit::Off;
+    // slice_crop=on: a second, finer slice view of each directional light over where meshes reach
+    // into the medium (planning/slice_crop.h), with an automatic slice resolution. Off in every
+    // tier: it costs the slice deposit about what the seam gains (docs/design-notes.md).
+    bool sliceCrop = false;
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     bool mediaScaleAuto = false;  // automaticMediaScale (media_renderer.h)
     float upsampleThreshold = 0.0f;  // relative depth difference the upsampler treats as an edge; 0: 0.2

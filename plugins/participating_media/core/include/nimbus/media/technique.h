@@ -90,6 +90,7 @@ struct TechniqueEntry {
     std::string help;  // what the mode is, in one line
     bool lightSlices = true;    // lit by the shared light slice views (the slice keys act in it)
     bool sliceDeposit = false;  // its slices honour slice_deposit
+    bool sliceCrops = false;    // its lighting reads a light's slice crop (slice_crop acts in it)
     bool multipleScattering = true;  // draws the multiple-scattering model (the scattering keys act in it)
     bool volumes = false;            // draws volumes (volume.h); the other modes refuse a scene with one
     bool edges = false;              // may draw a reduced image's edges again (addEdges): mixed_resolution acts in it
