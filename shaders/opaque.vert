@@ -79,7 +79,7 @@ void main() {
         vSliceDepth[i] = -(slices.view * p).z;
 #ifdef MEDIA_SLICE_CROPS
         // A crop's clip coordinates (light_transmittance.glsl), or a point outside any crop.
-        vCropClip[i] = sliceViews.y == 2 ? mediaSliceViews[sliceViews.x + 1].viewProjection * p : vec4(2.0, 2.0, 0.0, 1.0);
+        vCropClip[i] = sliceViews.y == 2 ? mediaCropClip(slices, mediaSliceViews[sliceViews.x + 1], vSliceClip[i]) : vec4(2.0, 2.0, 0.0, 1.0);
 #endif
 #endif
     }

@@ -52,9 +52,9 @@ void ShadowPass::add(FrameGraph& graph, FrameContext& context) {
                                 .offsetFactor = -1.5f,
                                 .offsetUnits = -2.0f});
             int layer = 0;
+            const int pointFaceSize = pointShadowSize(context.settings);
             for (std::size_t light = 0; light < context.shadowViews.size(); ++light) {
-                const int side = gpu::shadowViewSide(punctualLight(context.input.lights[light]).kind, size,
-                                                     pointShadowSize(context.settings));
+                const int side = gpu::shadowViewSide(punctualLight(context.input.lights[light]).kind, size, pointFaceSize);
                 glViewport(0, 0, side, side);
                 for (const auto& view : context.shadowViews[light]) {
                     glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, resources.id(d.map), 0, layer++);

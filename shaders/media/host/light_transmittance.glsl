@@ -36,7 +36,7 @@ float mediaViewOpticalDepthAt(GpuLightView v, vec4 clip, float depth) { return m
 
 // MEDIA_SLICE_CROPS: the lookups below by light read a light's crop (count 2) where it holds p. It
 // is a define, not a test of the count, because llvmpipe pays for the test's arithmetic on every
-// lookup of every light (the exact tier's fragments: 8%); without it a light with a crop reads its
+// lookup of every light (the exact tier's fragments: 6–9%); without it a light with a crop reads its
 // whole view, which holds the same light, only coarser.
 // A directional light may come with two views (count 2): the whole medium's, then a finer crop over
 // where meshes reach into it: the same orthographic view shifted and narrowed across, with the same
@@ -54,9 +54,20 @@ vec4 mediaCropClip(GpuLightView whole, GpuLightView crop, vec4 clip) {
     return vec4(clip.xy * scale + (crop.viewProjection[3].xy - whole.viewProjection[3].xy * scale), 0.0, 1.0);
 }
 
-float mediaCroppedOpticalDepthAt(GpuLightView whole, GpuLightView crop, vec4 clip, vec4 cropClip, float depth) {
+// Where the crop holds the point, its params, first layer and clip coordinates replace the whole
+// view's: selected, not branched, so a lookup fetches once either way.
+void mediaChooseCrop(GpuLightView crop, vec4 cropClip, float depth, inout vec4 params, inout float layer, inout vec4 clip) {
     bool inside = mediaInsideCrop(crop, cropClip, depth);
-    return mediaSliceOpticalDepthAt(inside ? crop.params : whole.params, inside ? crop.params2.x : whole.params2.x, inside ? cropClip : clip, depth);
+    params = inside ? crop.params : params;
+    layer = inside ? crop.params2.x : layer;
+    clip = inside ? cropClip : clip;
+}
+
+float mediaCroppedOpticalDepthAt(GpuLightView whole, GpuLightView crop, vec4 clip, vec4 cropClip, float depth) {
+    vec4 params = whole.params;
+    float layer = whole.params2.x;
+    mediaChooseCrop(crop, cropClip, depth, params, layer, clip);
+    return mediaSliceOpticalDepthAt(params, layer, clip, depth);
 }
 
 // The optical depth one light view's slices hold at p.
@@ -90,13 +101,9 @@ float mediaOpticalDepthOf(int light, int count, vec3 lightPosition, vec3 p) {
     vec4 params = mediaSliceViews[first + face].params;
     float layer = mediaSliceViews[first + face].params2.x;
 #ifdef MEDIA_SLICE_CROPS
-    if (count == 2) {  // one fetch either way: llvmpipe runs both sides of a branch
-        vec4 cropClip = mediaCropClip(mediaSliceViews[first], mediaSliceViews[first + 1], clip);
-        bool inside = mediaInsideCrop(mediaSliceViews[first + 1], cropClip, depth);
-        params = inside ? mediaSliceViews[first + 1].params : params;
-        layer = inside ? mediaSliceViews[first + 1].params2.x : layer;
-        clip = inside ? cropClip : clip;
-    }
+    if (count == 2)
+        mediaChooseCrop(mediaSliceViews[first + 1], mediaCropClip(mediaSliceViews[first], mediaSliceViews[first + 1], clip), depth, params,
+                        layer, clip);
 #endif
     return mediaSliceOpticalDepthAt(params, layer, clip, depth);
 }
