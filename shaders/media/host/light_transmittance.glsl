@@ -40,11 +40,13 @@ float mediaViewOpticalDepthAt(GpuLightView v, vec4 clip, float depth) { return m
 // whole view, which holds the same light, only coarser.
 // A directional light may come with two views (count 2): the whole medium's, then a finer crop over
 // where meshes reach into it: the same orthographic view shifted and narrowed across, with the same
-// view depth and near plane (media planning/slice_crop.h). A point inside the crop's footprint and
-// before its far plane reads the crop. `cropClip`: p's clip coordinates in the crop, `depth` its
-// view depth (the same in both).
+// view depth, its planes from a little before the meshes to past them (media planning/slice_crop.h).
+// Its first plane holds all the light has crossed before it; its near plane, one spacing before
+// that, is not read. A point inside the crop's footprint and between its first and far planes reads
+// the crop. `cropClip`: p's clip coordinates in the crop, `depth` its view depth (the same in both).
 bool mediaInsideCrop(GpuLightView crop, vec4 cropClip, float depth) {
-    return all(lessThanEqual(abs(cropClip.xy), vec2(cropClip.w))) && depth <= crop.params.z;
+    float first = crop.params.y + (crop.params.z - crop.params.y) / crop.params.w;
+    return all(lessThanEqual(abs(cropClip.xy), vec2(cropClip.w))) && depth >= first && depth <= crop.params.z;
 }
 
 // The crop's clip coordinates from the whole view's (w = 1): a scale and an offset across, cheaper

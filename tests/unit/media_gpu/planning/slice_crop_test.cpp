@@ -1,7 +1,7 @@
 // Tests plugins/participating_media/core/src/planning/slice_crop.cpp: a directional light's crop
 // over where a mesh box reaches into the medium: narrowed to the overlap but never more than
-// kCropGain finer, inside the whole view, starting at its near plane with the same view depth, and
-// none where it would not pay.
+// kCropGain finer, inside the whole view with the same view depth, its first plane a margin before
+// the mesh, and none where it would not pay.
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -31,8 +31,13 @@ TEST(SliceCrop, NarrowsToTheMeshButNoMoreThanTheGain) {
     ASSERT_TRUE(crop.has_value());
     EXPECT_NEAR(crop->view.halfExtent.x, whole.halfExtent.x / kCropGain, 1e-4);
     EXPECT_NEAR(crop->view.halfExtent.y, whole.halfExtent.y / kCropGain, 1e-4);
-    EXPECT_FLOAT_EQ(crop->view.depthNear, whole.depthNear);
     EXPECT_LT(crop->view.depthFar, whole.depthFar);
+    // Its first plane lies the margin before the box's top (the sun is near vertical: depth is
+    // height below the view's origin), so a particle reaching the box lies wholly past it.
+    const double spacing = (crop->view.depthFar - crop->view.depthNear) / crop->slices;
+    const float boxTop = gpu::lightViewDepth(whole, glm::vec3(5.0f, 4.0f, 5.0f));
+    EXPECT_NEAR(crop->view.depthNear + spacing, boxTop - 0.5 - 0.5, 0.1);
+    EXPECT_GT(crop->view.depthNear + spacing, whole.depthNear + 1.0);
     // The crop keeps the whole view's depth and holds the box; it lies inside the whole view.
     for (const glm::dvec3& p : {glm::dvec3(5.5, 3.5, 5.5), glm::dvec3(5.0, 3.0, 5.0)}) {
         const glm::vec4 h(glm::vec3(p - kOrigin), 1.0f);
@@ -50,8 +55,7 @@ TEST(SliceCrop, NarrowsToTheMeshButNoMoreThanTheGain) {
     }
     // Its planes are kCropGain closer than the whole view's 16 over the whole depth.
     const double wholeSpacing = (whole.depthFar - whole.depthNear) / 16.0;
-    const double cropSpacing = (crop->view.depthFar - crop->view.depthNear) / crop->slices;
-    EXPECT_LE(cropSpacing, wholeSpacing / kCropGain + 1e-9);
+    EXPECT_LE(spacing, wholeSpacing / kCropGain + 1e-9);
     EXPECT_EQ(crop->slices % 4, 0);
 }
 
@@ -59,8 +63,8 @@ TEST(SliceCrop, NoneWhereItWouldNotPay) {
     const gpu::LightView whole = sunView();
     // No mesh box meets the medium.
     EXPECT_FALSE(meshCropView(whole, 16, {boxAt(glm::dvec3(20.0), glm::dvec3(21.0))}, kMedium, 0.5, kOrigin).has_value());
-    // A ground under the whole medium: as wide as the whole view and as deep.
-    EXPECT_FALSE(meshCropView(whole, 16, {boxAt(glm::dvec3(-50.0, -1.0, -50.0), glm::dvec3(50.0, 0.5, 50.0))}, kMedium, 0.5, kOrigin).has_value());
+    // A mesh around the whole medium: as wide as the whole view and as deep.
+    EXPECT_FALSE(meshCropView(whole, 16, {boxAt(glm::dvec3(-50.0, -1.0, -50.0), glm::dvec3(50.0, 20.0, 50.0))}, kMedium, 0.5, kOrigin).has_value());
     // A point light's perspective views are never cropped.
     gpu::PunctualLight lamp;
     lamp.kind = gpu::LightKind::Point;
@@ -77,6 +81,17 @@ TEST(SliceCrop, AWideMeshHighInTheMediumTakesAShallowCrop) {
     ASSERT_TRUE(crop.has_value());
     EXPECT_GT(crop->view.halfExtent.x, 0.9 * whole.halfExtent.x);
     EXPECT_LT(crop->view.depthFar - crop->view.depthNear, 0.5 * (whole.depthFar - whole.depthNear));
+}
+
+TEST(SliceCrop, AGroundUnderTheMediumTakesAShallowCropAtItsBase) {
+    const gpu::LightView whole = sunView();
+    // The ground cuts the particles at the medium's base: its planes start just above it and are
+    // seeded there from the whole view, so the particles above are not drawn again.
+    const auto crop = meshCropView(whole, 16, {boxAt(glm::dvec3(-50.0, -1.0, -50.0), glm::dvec3(50.0, 0.5, 50.0))}, kMedium, 0.5, kOrigin);
+    ASSERT_TRUE(crop.has_value());
+    const double spacing = (crop->view.depthFar - crop->view.depthNear) / crop->slices;
+    EXPECT_GT(crop->view.depthNear + spacing, whole.depthNear + 0.7 * (whole.depthFar - whole.depthNear));
+    EXPECT_NEAR(crop->view.depthFar, whole.depthFar, 0.1);
 }
 
 }  // namespace

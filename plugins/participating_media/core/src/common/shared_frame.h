@@ -28,6 +28,9 @@ struct SliceView {
     // faces may need fewer than the array holds for the sun; the light-slice pass draws them
     // small and scales them up into their layers (light_slice_pass.cpp).
     int resolution = 0;
+    // A crop (planning/slice_crop.h): the index of the whole view whose optical depth at this view's
+    // first plane seeds it, so its first slab takes no particles; −1 for a whole view.
+    int seedView = -1;
 };
 
 struct SharedFrame {

@@ -199,6 +199,7 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
             if (cropped && lightViews.size() == 1)
                 if (const auto crop = meshCropView(view, slices, context.host.occluders, shared.bounds, maxRadius, origin)) {
                     add(crop->view, crop->slices, 0);
+                    shared.sliceViews.back().seedView = static_cast<int>(shared.sliceViews.size()) - 2;
                     ++stats_.slicesCropped;
                 }
         }

@@ -47,24 +47,28 @@ std::optional<SliceCrop> meshCropView(const gpu::LightView& whole, int wholeSlic
     }
     // The whole view is centred on its own footprint, which the crop stays inside.
     const glm::dvec2 wholeHalf(whole.halfExtent);
-    const double wholeDepth = static_cast<double>(whole.depthFar - whole.depthNear);
-    const double depthFar = std::clamp(-lo.z, static_cast<double>(whole.depthNear) + 1e-6, static_cast<double>(whole.depthFar));
+    const double wholeNear = static_cast<double>(whole.depthNear), wholeDepth = static_cast<double>(whole.depthFar) - wholeNear;
+    const double depthFar = std::clamp(-lo.z, wholeNear + 1e-6, static_cast<double>(whole.depthFar));
+    // Its first plane: a margin before the overlap, so a particle reaching a mesh lies wholly past it.
+    const double first = std::clamp(-hi.z - margin, wholeNear, depthFar - 1e-6);
     const double across = std::min(wholeHalf.x / std::max(0.5 * (hi.x - lo.x), 1e-9), wholeHalf.y / std::max(0.5 * (hi.y - lo.y), 1e-9));
-    if (across < kMinCropGain && wholeDepth < kMinCropGain * (depthFar - whole.depthNear)) return std::nullopt;
+    if (across < kMinCropGain && wholeDepth < kMinCropGain * (depthFar - first)) return std::nullopt;
     widenInside(lo.x, hi.x, wholeHalf.x / kCropGain, wholeHalf.x);
     widenInside(lo.y, hi.y, wholeHalf.y / kCropGain, wholeHalf.y);
     const glm::dvec2 half(0.5 * (hi.x - lo.x), 0.5 * (hi.y - lo.y)), mid(0.5 * (hi.x + lo.x), 0.5 * (hi.y + lo.y));
     glm::dmat4 shift(1.0);
     shift[3][0] = -mid.x;
     shift[3][1] = -mid.y;
-    SliceCrop crop{whole, 0};
+    // Planes kCropGain closer than the whole view's from `first` on, one more before it (its near
+    // plane, whose zero no lookup reads), in fours as the slice layers hold them.
+    const double planes = 1.0 + kCropGain * wholeSlices * (depthFar - first) / wholeDepth;
+    SliceCrop crop{whole, std::clamp(4 * static_cast<int>(std::ceil(planes / 4.0 - 1e-9)), kMinSlices, kMaxSlices)};
+    const double depthNear = first - (depthFar - first) / (crop.slices - 1);
     crop.view.view = glm::mat4(shift * view);
+    crop.view.depthNear = static_cast<float>(depthNear);
     crop.view.depthFar = static_cast<float>(depthFar);
     crop.view.halfExtent = glm::vec2(half);
-    crop.view.viewProjection = gpu::reversedOrthographic(half.x, half.y, whole.depthNear, depthFar) * crop.view.view;
-    // Planes kCropGain closer than the whole view's, in fours as the slice layers hold them.
-    const double planes = kCropGain * wholeSlices * (depthFar - whole.depthNear) / wholeDepth;
-    crop.slices = std::clamp(4 * static_cast<int>(std::ceil(planes / 4.0 - 1e-9)), kMinSlices, kMaxSlices);
+    crop.view.viewProjection = gpu::reversedOrthographic(half.x, half.y, depthNear, depthFar) * crop.view.view;
     return crop;
 }
 

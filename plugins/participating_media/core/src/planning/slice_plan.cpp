@@ -125,7 +125,7 @@ SlabRange particleSlabs(double depth, double radius, bool perspective, double de
 }
 
 void appendSlabPieces(const ParticleSet& particles, const gpu::LightView& view, const glm::dvec3& origin, int slices,
-                      std::vector<std::uint32_t>& pieces) {
+                      std::vector<std::uint32_t>& pieces, int firstSlab) {
     const glm::dmat4 viewMatrix(view.view);
     const glm::dvec2 half(view.halfExtent);
     for (std::size_t i = 0; i < particles.size(); ++i) {
@@ -134,7 +134,7 @@ void appendSlabPieces(const ParticleSet& particles, const gpu::LightView& view, 
         if (!view.perspective && (std::abs(p.x) > half.x + particles.radius[i] || std::abs(p.y) > half.y + particles.radius[i])) continue;
         const double depth = -p.z;
         const SlabRange range = particleSlabs(depth, particles.radius[i], view.perspective, view.depthNear, view.depthFar, slices);
-        for (int k = range.first; k <= range.last; ++k)
+        for (int k = std::max(range.first, firstSlab); k <= range.last; ++k)
             pieces.push_back(static_cast<std::uint32_t>(i) << kSlabBits | static_cast<std::uint32_t>(k));
     }
 }

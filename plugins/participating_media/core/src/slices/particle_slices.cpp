@@ -25,7 +25,7 @@ void ParticleSlices::add(gpu::FrameGraph& graph, GraphFrame& context, const Part
         std::vector<std::uint32_t> pieces;
         std::vector<int> firstPiece{0};
         for (const SliceView& v : views) {
-            appendSlabPieces(particles, v.view, context.host.camera.origin, v.slices, pieces);
+            appendSlabPieces(particles, v.view, context.host.camera.origin, v.slices, pieces, v.seedView >= 0 ? 1 : 0);
             firstPiece.push_back(static_cast<int>(pieces.size()));
         }
         if (!deposit_) deposit_ = std::make_unique<LightSliceDepositPass>();

@@ -58,8 +58,9 @@ struct SlabRange {
 };
 SlabRange particleSlabs(double depth, double radius, bool perspective, double depthNear, double depthFar, int slices);
 
-// Appends the pieces of one view (particle << kSlabBits | slab), in particle order.
+// Appends the pieces of one view (particle << kSlabBits | slab), in particle order, from slab
+// `firstSlab` on: a seeded crop's first slab holds its seed instead (light_slice_prefix_pass.h).
 void appendSlabPieces(const ParticleSet& particles, const gpu::LightView& view, const glm::dvec3& origin, int slices,
-                      std::vector<std::uint32_t>& pieces);
+                      std::vector<std::uint32_t>& pieces, int firstSlab = 0);
 
 }  // namespace nimbus::media
