@@ -1,7 +1,7 @@
 #version 450 core
 // Light-slice prefix (media/light_slice_prefix_pass.cpp): the optical depth up to each slice plane
 // of one light view, as the running sum of its slabs, into 4 slices per RGBA32F layer, as every
-// slice pass writes them (light_slice_pairs.comp rewrites them for the readers). A crop's sum
+// slice pass writes them (light_slice_intervals.frag rewrites them for the readers). A crop's sum
 // starts from its seed: the whole view's optical depth at the crop's first plane, interpolated as a
 // lookup would (media planning/slice_crop.h), as no particle is drawn into the crop's first slab.
 #include "media/bindings.glsl"

@@ -57,11 +57,13 @@ const std::vector<std::string> kNames{"exact", "exact hard-clipped", "balanced",
 enum { kExact, kHard, kBalanced, kFast, kBlocksBalanced, kBlocksFast };
 
 // Today's levels, the same assertions on every scene: soft particles cut the kernel at the mesh
-// (exact under half the hard-clipped error), balanced and blocks within a factor of exact, fast
-// under a fixed band error, and blocks in fast under particles in fast (the issue's: the seam
-// handling blocks exist for, at fast-tier cost). Prints the three ratios beside them.
+// (exact under half the hard-clipped error), balanced, blocks and fast under fixed band errors, and
+// blocks in fast under particles in fast (the issue's: the seam handling blocks exist for, at
+// fast-tier cost). Prints the three ratios beside them. The bounds are band errors, not
+// multiples of exact's: the slices' cubic between planes took exact's own band error down 3x on
+// cumulus_aircraft, and a ratio would have failed tiers whose error fell too.
 struct Levels {
-    double balancedOverExact, blocksOverExact, fastBand;
+    double balancedBand, blocksBand, fastBand;
 };
 
 void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
@@ -70,13 +72,15 @@ void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
                 "(<= 0.5)\n",
                 e[kBalanced].band / e[kExact].band, e[kFast].band / e[kExact].band, e[kFast].band / e[kHard].band);
     EXPECT_LE(e[kExact].band, 0.5 * e[kHard].band) << "soft particles cut the kernel at the mesh";
-    EXPECT_LE(e[kBalanced].band, levels.balancedOverExact * e[kExact].band);
-    EXPECT_LE(e[kBlocksBalanced].band, levels.blocksOverExact * e[kExact].band);
+    EXPECT_LE(e[kBalanced].band, levels.balancedBand);
+    EXPECT_LE(e[kBlocksBalanced].band, levels.blocksBand);
     EXPECT_LE(e[kFast].band, levels.fastBand);
     EXPECT_LT(e[kBlocksFast].band, e[kFast].band) << "blocks in fast err less in the band than particles in fast";
 }
 
-// Measured at 320x180 (single scattering), band of 2166 pixels: exact 0.54 %, hard-clipped 2.62 %,
+// Measured at 320x180 (single scattering), band of 2166 pixels: exact 0.47 %, hard-clipped 2.67 %,
+// balanced 0.75 %, fast 2.17 %, blocks 0.78 % / 1.90 %. Before the slices' cubic between planes
+// (straight lines): exact 0.54 %, hard-clipped 2.62 %,
 // balanced 0.85 % (1.61 % before balanced took the sun's mesh visibility per fragment on the
 // particles a mesh crosses), fast 2.29 % (4.26 % before its splats were drawn again at full
 // resolution at the reduced target's edges near the wing, 2.87 % before also where the wing lies
@@ -85,44 +89,52 @@ void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
 // now errs as at full resolution: the rest is its per-particle fit and coarser slices, not yet
 // the 1.5x exact. The bounds below hold today's levels.
 TEST_F(SeamBand, WingThroughCloud) {
-    expectLevels(measure(mediaScene("wing_through_cloud"), kSettings, kNames), {.balancedOverExact = 2.0, .blocksOverExact = 2.0, .fastBand = 0.026});
+    expectLevels(measure(mediaScene("wing_through_cloud"), kSettings, kNames), {.balancedBand = 0.009, .blocksBand = 0.0095, .fastBand = 0.026});
 }
 
-// Measured at 320x180, band of 1184 pixels: exact 0.79 %, hard-clipped 2.49 %, balanced 0.95 %
-// (0.98 % before), fast 2.65 %, blocks 1.39 % / 1.23 %. At this size the billboards are too small
+// Measured at 320x180, band of 1184 pixels: exact 0.27 %, hard-clipped 2.45 %, balanced 0.44 %,
+// fast 1.46 %, blocks 1.40 % / 1.16 %; before the slices' cubic exact 0.79 %, hard-clipped 2.49 %,
+// balanced 0.95 % (0.98 % before), fast 2.65 %, blocks 1.39 % / 1.23 %. At this size the billboards are too small
 // for media_scale=auto to reduce the target, so fast is drawn at full resolution here. At ½, as
 // auto chose before: fast 3.17 % (5.56 % before the edges), blocks fast 2.30 % (5.33 % before the
 // edges, 3.35 % before the finer slices).
 TEST_F(SeamBand, CumulusAircraft) {
-    expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.balancedOverExact = 1.3, .blocksOverExact = 2.0, .fastBand = 0.04});
+    expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.balancedBand = 0.006, .blocksBand = 0.016, .fastBand = 0.02});
 }
 
 // slice_crop (planning/slice_crop.h: a finer view of the sun's slices over the airliner) takes
-// fast and balanced within the bounds on cumulus_aircraft. Measured: fast 1.08x exact and
-// 0.34x the hard-clipped billboards (3.33x and 1.06x without it), balanced 0.68x (1.20x); with the
-// crop's planes where they lay before it was seeded (from the whole view's near plane), 1.39x and
-// 1.05x: the band moves with where the planes fall (docs/design-notes.md). No tier takes it by
-// default: at 1280x720 it costs the slice deposit more than finer slices everywhere.
+// balanced within the bounds on cumulus_aircraft, and fast with balanced's slice detail.
+// Measured: fast 2.00x exact and 0.22x the hard-clipped billboards (5.35x and 0.60x without it),
+// with slice_detail=4 1.18x; balanced 0.90x (1.60x). Before the slices' cubic between planes:
+// fast 1.08x, balanced 0.68x, but exact's own band error was then 3x today's. No tier takes it
+// by default: at 1280x720 it costs the slice deposit more than the fast frame can spare
+// (docs/design-notes.md).
 TEST_F(SeamBand, SliceCropOnCumulusAircraft) {
-    const std::vector<BandErrors> e =
-        measure(contentScene("cumulus_aircraft"),
-                {{}, {"soft_particles=off"}, {"quality=fast", "slice_crop=on"}, {"quality=fast"}, {"quality=balanced", "slice_crop=on"}},
-                {"exact", "exact hard-clipped", "fast, slice_crop=on", "fast", "balanced, slice_crop=on"});
-    ASSERT_EQ(e.size(), 5u);
-    std::printf("[ measured ] with the crop: fast %.2f x exact, %.2f x hard-clipped; balanced %.2f x exact\n", e[2].band / e[0].band,
-                e[2].band / e[1].band, e[4].band / e[0].band);
-    EXPECT_LE(e[2].band, 1.5 * e[0].band);
+    const std::vector<BandErrors> e = measure(contentScene("cumulus_aircraft"),
+                                              {{},
+                                               {"soft_particles=off"},
+                                               {"quality=fast", "slice_crop=on"},
+                                               {"quality=fast"},
+                                               {"quality=balanced", "slice_crop=on"},
+                                               {"quality=fast", "slice_crop=on", "slice_detail=4"}},
+                                              {"exact", "exact hard-clipped", "fast, slice_crop=on", "fast", "balanced, slice_crop=on",
+                                               "fast, slice_crop, detail 4"});
+    ASSERT_EQ(e.size(), 6u);
+    std::printf("[ measured ] with the crop: fast %.2f x exact, %.2f x hard-clipped; balanced %.2f x exact; fast at detail 4 %.2f x exact\n",
+                e[2].band / e[0].band, e[2].band / e[1].band, e[4].band / e[0].band, e[5].band / e[0].band);
+    EXPECT_LE(e[2].band, 2.4 * e[0].band);
     EXPECT_LE(e[2].band, 0.5 * e[1].band);
     EXPECT_LE(e[2].band, 0.6 * e[3].band) << "the crop lowers fast's band error";
     EXPECT_LE(e[4].band, 1.2 * e[0].band);
+    EXPECT_LE(e[5].band, 1.5 * e[0].band) << "fast within the issue's bound with the crop at balanced's slice detail";
 }
 
 // Mixed resolution (fast tier, media_scale auto at ¼ here): the medium drawn again at full
 // resolution at the reduced image's edges near the wing, and where the wing lies inside a particle
 // (mesh_cuts), takes the band to the full-resolution frame's error in particles and raymarch.
-// Measured (with, mesh_cuts=off, mixed_resolution=off, full resolution): particles 2.29 %,
-// 2.87 %, 4.26 %, 2.29 %; raymarch 2.41 %, 2.92 %, 4.26 %, 2.40 %; blocks 1.92 %, 2.43 %, 4.11 %,
-// 1.39 % (at full resolution blocks in fast light the whole frame with finer slices near the wing,
+// Measured (with, mesh_cuts=off, mixed_resolution=off, full resolution): particles 2.17 %,
+// 2.75 %, 4.17 %, 2.18 %; raymarch 2.30 %, 2.82 %, 4.18 %, 2.31 %; blocks 1.90 %, 2.41 %, 4.10 %,
+// 1.35 % (at full resolution blocks in fast light the whole frame with finer slices near the wing,
 // the redraw only its pixels: the rest of the band keeps the reduced target's light).
 TEST_F(SeamBand, MixedResolutionRedrawsTheEdgesNearTheWing) {
     const std::vector<std::pair<const char*, double>> modes{{"mode=particles", 1.1}, {"mode=raymarch", 1.1}, {"mode=blocks", 1.5}};

@@ -186,8 +186,8 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(storageBinding(deposit.id(), "SlicePieces"), static_cast<GLint>(kSlicePiecesBinding));
     const gpu::Program prefix = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_prefix.frag"});
     EXPECT_EQ(samplerUnit(prefix.id(), "uSlabs"), static_cast<GLint>(kSlabsUnit));
-    const gpu::Program pairs = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_pairs.frag"});
-    EXPECT_EQ(samplerUnit(pairs.id(), "uPacked"), static_cast<GLint>(kPackedSlicesUnit));
+    const gpu::Program intervals = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_intervals.frag"});
+    EXPECT_EQ(samplerUnit(intervals.id(), "uPacked"), static_cast<GLint>(kPackedSlicesUnit));
     const gpu::Program hostDepth = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/frame/host_depth.frag"});
     EXPECT_EQ(samplerUnit(hostDepth.id(), "uHostDepth"), static_cast<GLint>(kHostDepthUnit));
     const gpu::Program stencil = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/blocks/block_seam_stencil.frag"});

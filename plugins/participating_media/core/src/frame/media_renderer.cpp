@@ -12,7 +12,7 @@
 #include "nimbus/media/slice_plan.h"
 #include "particles/splat_floor.h"
 #include "planning/slice_crop.h"
-#include "slices/light_slice_pairs_pass.h"
+#include "slices/light_slice_intervals_pass.h"
 #include "upsample/media_depth_used_pass.h"
 #include "upsample/media_edge_stencil_pass.h"
 #include "upsample/media_seam_marks_pass.h"
@@ -139,17 +139,17 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
     if (techniques_.at(settings_.mode).lightSlices) planSliceViews(context, perLight);
     for (const SliceView& v : shared.sliceViews)
         context.sliceViews.push_back(
-            gpu::packLightView(v.view, 2 * v.firstLayer, static_cast<float>(v.slices), static_cast<float>(shared.sliceResolution)));
+            gpu::packLightView(v.view, 4 * v.firstLayer, static_cast<float>(v.slices), static_cast<float>(shared.sliceResolution)));
     shared.blocks->pack(context.host, context.sliceViews, perLight);
     planScattering(context);
     stats_.sliceResolution = shared.sliceResolution;
     stats_.sliceViews = static_cast<int>(shared.sliceViews.size());
     technique_->addLightSlices(graph, context, frame_);
-    // Whichever passes drew them, the slices are read as pairs, each plane beside the one before it
-    // (light_slice_pairs_pass.h).
+    // Whichever passes drew them, the slices are read by interval, each with its ends' neighbours
+    // (light_slice_intervals_pass.h).
     if (context.slices.valid()) {
-        if (!slicePairsPass_) slicePairsPass_ = std::make_unique<LightSlicePairsPass>();
-        context.slices = slicePairsPass_->add(graph, shared.sliceViews, shared.sliceResolution, context.slices);
+        if (!sliceIntervalsPass_) sliceIntervalsPass_ = std::make_unique<LightSliceIntervalsPass>();
+        context.slices = sliceIntervalsPass_->add(graph, shared.sliceViews, shared.sliceResolution, context.slices);
     }
 }
 

@@ -48,7 +48,7 @@ class ParticleGpuBuffer;
 class MediaDepthUsedPass;
 class MediaEdgeStencilPass;
 class MediaSeamMarksPass;
-class LightSlicePairsPass;
+class LightSliceIntervalsPass;
 class SplatFloor;
 struct ImmediateFrame;
 struct SliceView;
@@ -114,7 +114,7 @@ private:
     std::unique_ptr<MediaDepthUsedPass> depthUsedPass_;
     std::unique_ptr<MediaEdgeStencilPass> edgeStencilPass_;
     std::unique_ptr<MediaSeamMarksPass> seamMarksPass_;
-    std::unique_ptr<LightSlicePairsPass> slicePairsPass_;
+    std::unique_ptr<LightSliceIntervalsPass> sliceIntervalsPass_;
     std::unique_ptr<SplatFloor> splatFloor_;
 };
 
