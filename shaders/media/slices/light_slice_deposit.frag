@@ -28,7 +28,7 @@ void main() {
         lo = max(vSlab.x / cosAxis, 0.0) - tc;  // the rays start at the light
         hi = vSlab.y / cosAxis - tc;
     } else {
-        beta = length(vPoint.xy);  // the quad's half size is the radius
+        beta = length(vPoint.xy);  // vPoint in radii (light_slice_deposit.vert)
         lo = vSlab.x + c.z;        // ray parameter = view depth = −z
         hi = vSlab.y + c.z;
     }

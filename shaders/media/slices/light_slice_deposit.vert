@@ -32,8 +32,18 @@ void main() {
     vSlab = vec4(slab == 0 ? -1e30 : uParams.y + float(slab) * spacing,
                  slab == int(uParams.w) - 1 ? 1e30 : uParams.y + float(slab + 1) * spacing, particle.albedoSigma.w, 0.0);
     bool perspective = uParams.x > 0.5;
-    gl_Position = lightBillboardCorner(c, radius, perspective, uProjection, gl_VertexID);
-    // The quad's point in view space, for the fragment's ray: clip back to view space.
-    vPoint = perspective ? (inverse(uProjection) * gl_Position).xyz / (inverse(uProjection) * gl_Position).w
-                         : vec3(kLightBillboardCorners[gl_VertexID], 0.0);
+    if (perspective) {
+        gl_Position = lightBillboardCorner(c, radius, true, uProjection, gl_VertexID);
+        // The quad's point in view space, for the fragment's ray: clip back to view space.
+        vec4 point = inverse(uProjection) * gl_Position;
+        vPoint = point.xyz / point.w;
+        return;
+    }
+    // Orthographic: only rays within the sphere's section at the slab's face nearest its centre
+    // reach into the slab, so the quad shrinks to that disc (most of a particle's pieces lie off its
+    // centre; the rays left out would add nothing).
+    float off = max(max(vSlab.x + c.z, -c.z - vSlab.y), 0.0);
+    float shrink = sqrt(max(1.0 - off * off / (radius * radius), 0.0));
+    gl_Position = lightBillboardCorner(c, radius * shrink, false, uProjection, gl_VertexID);
+    vPoint = vec3(kLightBillboardCorners[gl_VertexID] * shrink, 0.0);  // in radii: the fragment's β
 }
