@@ -139,7 +139,7 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
     if (techniques_.at(settings_.mode).lightSlices) planSliceViews(context, perLight);
     for (const SliceView& v : shared.sliceViews)
         context.sliceViews.push_back(
-            gpu::packLightView(v.view, 4 * v.firstLayer, static_cast<float>(v.slices), static_cast<float>(shared.sliceResolution)));
+            gpu::packLightView(v.view, intervalLayer(v), static_cast<float>(v.slices), static_cast<float>(shared.sliceResolution)));
     shared.blocks->pack(context.host, context.sliceViews, perLight);
     planScattering(context);
     stats_.sliceResolution = shared.sliceResolution;

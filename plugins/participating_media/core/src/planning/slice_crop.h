@@ -39,6 +39,12 @@ struct SliceCrop {
 // its near plane lies one spacing before plane 1 and is never read. Empty for a perspective view,
 // where no mesh box reaches into the medium, or where the overlap is neither kMinCropGain narrower
 // nor shallower than the medium.
+// A crop's first plane, the depth its seed is taken at and from which lookups read it: one spacing
+// past its near plane.
+inline double cropFirstPlane(const gpu::LightView& crop, int slices) {
+    return crop.depthNear + (static_cast<double>(crop.depthFar) - crop.depthNear) / slices;
+}
+
 std::optional<SliceCrop> meshCropView(const gpu::LightView& whole, int wholeSlices, const std::vector<OccluderBox>& meshes, const Aabb& medium,
                                       double margin, const glm::dvec3& origin);
 

@@ -22,7 +22,7 @@ LightSliceIntervalsPass::LightSliceIntervalsPass() : pass_("media/slices/light_s
 gpu::ResourceHandle LightSliceIntervalsPass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
                                              gpu::ResourceHandle packed) {
     int layers = 1;
-    for (const SliceView& v : views) layers = std::max(layers, 4 * v.firstLayer + v.slices);
+    for (const SliceView& v : views) layers = std::max(layers, intervalLayer(v) + v.slices);
     struct Data {
         gpu::ResourceHandle packed, intervals;
     };
@@ -38,7 +38,7 @@ gpu::ResourceHandle LightSliceIntervalsPass::add(gpu::FrameGraph& graph, const s
             for (const SliceView& v : views)
                 for (int plane = 0; plane < v.slices; plane += kPlanesPerDraw) {
                     const int count = std::min(kPlanesPerDraw, v.slices - plane);
-                    attachSliceLayers(fbo.id(), resources.id(d.intervals), 4 * v.firstLayer + plane, count);
+                    attachSliceLayers(fbo.id(), resources.id(d.intervals), intervalLayer(v) + plane, count);
                     glProgramUniform1i(pass_.program(), kViewLayerLocation, v.firstLayer);
                     glProgramUniform1i(pass_.program(), kFirstPlaneLocation, plane);
                     glProgramUniform1i(pass_.program(), kPlanesLocation, v.slices);

@@ -15,6 +15,9 @@ namespace nimbus::media {
 // planes k and k + 1, plane 0 the near one) lands in layer 4·v.firstLayer + k. Does not change any
 // value. One interval to a layer, not two: the second's slope at its far end would have to be
 // one-sided, and at fast's plane spacing that erred more than a straight line (docs/design-notes.md).
+// The view's first layer in the intervals array: four for each of its packed layers.
+inline int intervalLayer(const SliceView& v) { return 4 * v.firstLayer; }
+
 class LightSliceIntervalsPass {
 public:
     LightSliceIntervalsPass();

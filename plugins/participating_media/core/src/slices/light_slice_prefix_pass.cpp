@@ -6,6 +6,7 @@
 #include "slices/light_slice_prefix_pass.h"
 
 #include "nimbus/media/gpu_bindings.h"
+#include "planning/slice_crop.h"
 
 namespace nimbus::media {
 
@@ -20,7 +21,7 @@ constexpr GLint kSeedUvLocation = 5;
 // (shaders/media/host/light_transmittance.glsl). `firstSlab`: the whole view's.
 void setSeedUniforms(GLuint program, const SliceView& crop, const SliceView& whole, int firstSlab) {
     const gpu::LightView &c = crop.view, &w = whole.view;
-    const double first = c.depthNear + (static_cast<double>(c.depthFar) - c.depthNear) / crop.slices;
+    const double first = cropFirstPlane(c, crop.slices);
     const double at = std::clamp((first - w.depthNear) / (static_cast<double>(w.depthFar) - w.depthNear) * whole.slices, 0.0,
                                  static_cast<double>(whole.slices));
     const int slab = std::min(static_cast<int>(at), whole.slices - 1);

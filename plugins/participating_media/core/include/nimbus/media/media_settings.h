@@ -38,7 +38,7 @@ struct MediaRenderSettings {
     // slice_crop=on: a second, finer slice view of each directional light over where meshes reach
     // into the medium (planning/slice_crop.h), with an automatic slice resolution. Off in every
     // tier: where the meshes span the medium's depth along the light (cumulus_aircraft) it draws
-    // most particles again, and costs the fast frame 40% (docs/design-notes.md).
+    // most particles again, and costs the fast frame 40–55% (docs/design-notes.md).
     bool sliceCrop = false;
     float mediaScale = 0.0f;   // resolution of the media pass relative to the frame (1, 0.5, 0.25); 0: 1
     bool mediaScaleAuto = false;  // automaticMediaScale (media_renderer.h)
