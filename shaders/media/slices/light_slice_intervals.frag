@@ -19,13 +19,16 @@ void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     // Planes uFirstPlane − 3 .. uFirstPlane + 12: packed layers of slices uFirstPlane − 4 .. + 11.
     int first = uViewLayer + uFirstPlane / 4 - 1, last = uViewLayer + (uPlanes - 1) / 4;
-    vec4 held[4];
+    vec4 held[4];  // held[j >> 2][j & 3]: plane uFirstPlane − 3 + j, where it is one of the view's
     for (int l = 0; l < 4; ++l) held[l] = texelFetch(uPacked, ivec3(texel, clamp(first + l, uViewLayer, last)), 0);
+    // Every index is a constant once the loops unroll (llvmpipe runs a varying index lane by lane):
+    // the planes past the last are selected, not indexed.
+    float lastDepth = 0.0;
+    for (int j = 0; j < 16; ++j) lastDepth = uFirstPlane - 3 + j == uPlanes ? held[j >> 2][j & 3] : lastDepth;
     float tau[16];  // plane uFirstPlane − 3 + j
     for (int j = 0; j < 16; ++j) {
-        int plane = min(uFirstPlane - 3 + j, uPlanes);
-        int at = plane - (uFirstPlane - 3);
-        tau[j] = plane <= 0 ? 0.0 : held[at / 4][at - 4 * (at / 4)];
+        int plane = uFirstPlane - 3 + j;
+        tau[j] = plane <= 0 ? 0.0 : plane > uPlanes ? lastDepth : held[j >> 2][j & 3];
     }
     if (uCrop && uFirstPlane == 0) tau[3] = 2.0 * tau[4] - tau[5];
     for (int i = 0; i < 8; ++i) outIntervals[i] = vec4(tau[i + 2], tau[i + 3], tau[i + 4], tau[i + 5]);

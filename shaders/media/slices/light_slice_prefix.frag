@@ -6,8 +6,13 @@
 // lookup would (media planning/slice_crop.h), as no particle is drawn into the crop's first slab.
 #include "media/bindings.glsl"
 layout(binding = MEDIA_SLABS_UNIT) uniform sampler2DArray uSlabs;
+// SLICES: the view's slice count, compile-time (light_slice_prefix_pass.cpp): with a constant count
+// the loop unrolls and every index into `values` is a constant, where llvmpipe ran a varying one
+// lane by lane (the pass took twice as long).
+#ifndef SLICES
+#error "light_slice_prefix.frag needs SLICES"
+#endif
 layout(location = 0) uniform int uFirstSlab;
-layout(location = 1) uniform int uSlices;
 layout(location = 2) uniform int uSeedSlab;       // the whole view's slab at the crop's first plane (−1: no seed)
 layout(location = 3) uniform int uSeedFirstSlab;  // the whole view's first slab
 layout(location = 4) uniform float uSeedShare;    // the share of slab uSeedSlab before that plane
@@ -26,10 +31,9 @@ void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     vec4 values[8] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0));
     float sum = uSeedSlab < 0 ? 0.0 : seed(texel);
-    int k = 0;
-    do {  // not for: llvmpipe runs a for loop's body once more, masked (slices ≥ 4)
+    for (int k = 0; k < SLICES; ++k) {
         sum += texelFetch(uSlabs, ivec3(texel, uFirstSlab + k), 0).r;
-        values[k / 4][k - 4 * (k / 4)] = sum;
-    } while (++k < uSlices);
+        values[k >> 2][k & 3] = sum;
+    }
     for (int a = 0; a < 8; ++a) outSlices[a] = values[a];
 }

@@ -184,7 +184,7 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     const gpu::Program deposit =
         gpu::compileProgram({.vertex = "media/slices/light_slice_deposit.vert", .fragment = "media/slices/light_slice_deposit.frag"});
     EXPECT_EQ(storageBinding(deposit.id(), "SlicePieces"), static_cast<GLint>(kSlicePiecesBinding));
-    const gpu::Program prefix = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_prefix.frag"});
+    const gpu::Program prefix = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_prefix.frag", .defines = {"SLICES 4"}});
     EXPECT_EQ(samplerUnit(prefix.id(), "uSlabs"), static_cast<GLint>(kSlabsUnit));
     const gpu::Program intervals = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_intervals.frag"});
     EXPECT_EQ(samplerUnit(intervals.id(), "uPacked"), static_cast<GLint>(kPackedSlicesUnit));

@@ -2,6 +2,7 @@
 // optical depth up to each slice plane, 4 slices per RGBA32F layer (shaders/media/slices/light_slice_prefix.frag);
 // a crop's sum starts from its seed.
 #include <algorithm>
+#include <string>
 
 #include "slices/light_slice_prefix_pass.h"
 
@@ -34,7 +35,15 @@ void setSeedUniforms(GLuint program, const SliceView& crop, const SliceView& who
 }
 }  // namespace
 
-LightSlicePrefixPass::LightSlicePrefixPass() : pass_("media/slices/light_slice_prefix.frag") {}
+LightSlicePrefixPass::LightSlicePrefixPass() = default;
+
+const gpu::FullscreenPass& LightSlicePrefixPass::passFor(int slices) {
+    std::unique_ptr<gpu::FullscreenPass>& pass = passes_.at(static_cast<std::size_t>(slices));
+    if (!pass)
+        pass = std::make_unique<gpu::FullscreenPass>("media/slices/light_slice_prefix.frag",
+                                                     std::vector<std::string>{"SLICES " + std::to_string(slices)});
+    return *pass;
+}
 
 gpu::ResourceHandle LightSlicePrefixPass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
                                                  gpu::ResourceHandle slabs) {
@@ -52,19 +61,19 @@ gpu::ResourceHandle LightSlicePrefixPass::add(gpu::FrameGraph& graph, const std:
         [this, views, resolution](const gpu::PassResources& resources, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glBindTextureUnit(kSlabsUnit, resources.id(d.slabs));
-            const GLuint program = pass_.program();
             std::vector<int> firstSlab{0};
             for (const SliceView& v : views) firstSlab.push_back(firstSlab.back() + v.slices);
             for (std::size_t i = 0; i < views.size(); ++i) {
                 const SliceView& v = views[i];
+                const gpu::FullscreenPass& pass = passFor(v.slices);
+                const GLuint program = pass.program();
                 bindSliceLayers(fbo.id(), resources.id(d.slices), v);
                 glProgramUniform1i(program, 0, firstSlab[i]);
-                glProgramUniform1i(program, 1, v.slices);
                 if (v.seedView >= 0)
                     setSeedUniforms(program, v, views[static_cast<std::size_t>(v.seedView)], firstSlab[static_cast<std::size_t>(v.seedView)]);
                 else
                     glProgramUniform1i(program, kSeedSlabLocation, -1);
-                pass_.draw(fbo.id(), glm::ivec2(resolution));
+                pass.draw(fbo.id(), glm::ivec2(resolution));
                 unbindSliceLayers(fbo.id(), v);
             }
         });

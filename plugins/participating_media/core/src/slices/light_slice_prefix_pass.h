@@ -1,10 +1,13 @@
 #pragma once
 // The `light_slice_prefix` pass (shaders/media/slices/light_slice_prefix.frag).
+#include <array>
+#include <memory>
 #include <vector>
 
 #include "nimbus/gpu/frame_graph.h"
 #include "nimbus/gpu/fullscreen_pass.h"
 #include "nimbus/gpu/gl_objects.h"
+#include "nimbus/media/slice_plan.h"
 #include "slices/slice_view.h"
 
 namespace nimbus::media {
@@ -17,7 +20,9 @@ public:
                                gpu::ResourceHandle slabs);
 
 private:
-    gpu::FullscreenPass pass_;
+    // The program for a view of `slices` slices (its count is compile-time), made when first needed.
+    const gpu::FullscreenPass& passFor(int slices);
+    std::array<std::unique_ptr<gpu::FullscreenPass>, kMaxSlices + 1> passes_;
 };
 
 }  // namespace nimbus::media
