@@ -37,6 +37,13 @@ void peakOrder(int light, vec3 origin, vec3 dir, LampNodes q, float tSurface, bo
     }
     for (int j = 0; j < LAMP_NEAR_NODES; ++j) order[j] = lampLogFactorAt(list, light, origin + dir * t[j], order[j]);
 }
+
+// order[j] for the quadrature loop's node j, selected, not indexed (lampNode says why).
+float nodeOrder(float order[LAMP_NEAR_NODES], int j) {
+    float picked = order[0];
+    for (int m = 1; m < LAMP_NEAR_NODES; ++m) picked = j == m ? order[m] : picked;
+    return picked;
+}
 #endif
 
 // A lamp's mesh shadow tap and slice optical depth at x. MEDIA_POINT_LAMPS: every lamp is a point
@@ -86,7 +93,7 @@ float lampSource(int light, vec3 origin, vec3 dir, float tc, float lo, float hi,
         atP = lit_ * exp(-depth) / d2;  // read only where not near: the first pass's, at p
         depth += vSigma * radius * max(kernelSegment(beta, u / radius) - entry, 0.0);
 #ifdef SPLAT_LAMP_ORDER
-        if (j < LAMP_NEAR_NODES) depth -= order[min(j, LAMP_NEAR_NODES - 1)];
+        if (j < LAMP_NEAR_NODES) depth -= nodeOrder(order, j);
 #endif
         sum += node.y * exp(-k * u * u - depth) * lit_;
     } while (++j < (near ? LAMP_NODES : 0));
