@@ -7,7 +7,8 @@
 #include "common/math.glsl"
 #include "media/common/kernel_table.glsl"
 
-layout(location = 2) uniform vec4 uParams;  // x: perspective
+// LIGHT_PERSPECTIVE: a point or spot light's view, compile-time (light_slice_deposit_pass.cpp):
+// llvmpipe ran both sides of a test of the view's kind (cumulus fast's pass: 22%).
 
 flat in vec4 vCentreRadius;
 flat in vec4 vSlab;
@@ -19,19 +20,19 @@ void main() {
     float radius = vCentreRadius.w, invRadius = 1.0 / radius;
     vec3 c = vCentreRadius.xyz;
     float beta, lo, hi;
-    if (uParams.x > 0.5) {
-        vec3 dir = normalize(vPoint);
-        float tc = dot(c, dir);
-        vec3 perp = c - tc * dir;
-        beta = sqrt(dot(perp, perp)) * invRadius;
-        float cosAxis = max(-dir.z, 1e-6);
-        lo = max(vSlab.x / cosAxis, 0.0) - tc;  // the rays start at the light
-        hi = vSlab.y / cosAxis - tc;
-    } else {
-        beta = length(vPoint.xy);  // vPoint in radii (light_slice_deposit.vert)
-        lo = vSlab.x + c.z;        // ray parameter = view depth = −z
-        hi = vSlab.y + c.z;
-    }
+#ifdef LIGHT_PERSPECTIVE
+    vec3 dir = normalize(vPoint);
+    float tc = dot(c, dir);
+    vec3 perp = c - tc * dir;
+    beta = sqrt(dot(perp, perp)) * invRadius;
+    float cosAxis = max(-dir.z, 1e-6);
+    lo = max(vSlab.x / cosAxis, 0.0) - tc;  // the rays start at the light
+    hi = vSlab.y / cosAxis - tc;
+#else
+    beta = length(vPoint.xy);  // vPoint in radii (light_slice_deposit.vert)
+    lo = vSlab.x + c.z;        // ray parameter = view depth = −z
+    hi = vSlab.y + c.z;
+#endif
     float segment = kernelSegment(beta, hi * invRadius) - kernelSegment(beta, lo * invRadius);
     outDepth = vSlab.z * radius * max(segment, 0.0);
 }

@@ -11,7 +11,8 @@
 layout(std430, binding = MEDIA_SLICE_PIECES_BINDING) readonly buffer SlicePieces { uint slicePieces[]; };  // particle << 5 | slab
 
 layout(location = 0) uniform mat4 uView;        // origin-relative world → light view
-layout(location = 2) uniform vec4 uParams;      // x: perspective, y: depth near, z: depth far, w: slices
+layout(location = 2) uniform vec4 uParams;      // y: depth near, z: depth far, w: slices (x: perspective,
+                                                // which LIGHT_PERSPECTIVE says: light_slice_deposit.frag)
 layout(location = 5) uniform mat4 uProjection;  // light view → light clip
 layout(location = 7) uniform int uFirstPiece;   // this view's pieces start there
 layout(location = 8) uniform int uFirstLayer;   // this view's first slab layer
@@ -31,14 +32,12 @@ void main() {
     float spacing = (uParams.z - uParams.y) / uParams.w;
     vSlab = vec4(slab == 0 ? -1e30 : uParams.y + float(slab) * spacing,
                  slab == int(uParams.w) - 1 ? 1e30 : uParams.y + float(slab + 1) * spacing, particle.albedoSigma.w, 0.0);
-    bool perspective = uParams.x > 0.5;
-    if (perspective) {
-        gl_Position = lightBillboardCorner(c, radius, true, uProjection, gl_VertexID);
-        // The quad's point in view space, for the fragment's ray: clip back to view space.
-        vec4 point = inverse(uProjection) * gl_Position;
-        vPoint = point.xyz / point.w;
-        return;
-    }
+#ifdef LIGHT_PERSPECTIVE
+    gl_Position = lightBillboardCorner(c, radius, true, uProjection, gl_VertexID);
+    // The quad's point in view space, for the fragment's ray: clip back to view space.
+    vec4 point = inverse(uProjection) * gl_Position;
+    vPoint = point.xyz / point.w;
+#else
     // Orthographic: only rays within the sphere's section at the slab's face nearest its centre
     // reach into the slab, so the quad shrinks to that disc (most of a particle's pieces lie off its
     // centre; the rays left out would add nothing).
@@ -46,4 +45,5 @@ void main() {
     float shrink = sqrt(max(1.0 - off * off / (radius * radius), 0.0));
     gl_Position = lightBillboardCorner(c, radius * shrink, false, uProjection, gl_VertexID);
     vPoint = vec3(kLightBillboardCorners[gl_VertexID] * shrink, 0.0);  // in radii: the fragment's β
+#endif
 }

@@ -29,7 +29,10 @@ void setDepositUniforms(GLuint program, const SliceView& v) {
 }  // namespace
 
 LightSliceDepositPass::LightSliceDepositPass()
-    : program_(gpu::compileProgram({.vertex = "media/slices/light_slice_deposit.vert", .fragment = "media/slices/light_slice_deposit.frag"})),
+    : orthographic_(gpu::compileProgram({.vertex = "media/slices/light_slice_deposit.vert", .fragment = "media/slices/light_slice_deposit.frag"})),
+      perspective_(gpu::compileProgram({.vertex = "media/slices/light_slice_deposit.vert",
+                                        .fragment = "media/slices/light_slice_deposit.frag",
+                                        .defines = {"LIGHT_PERSPECTIVE"}})),
       kernelTable_(createKernelTable()) {}
 
 bool LightSliceDepositPass::supported() { return epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array"); }
@@ -64,8 +67,6 @@ gpu::ResourceHandle LightSliceDepositPass::add(gpu::FrameGraph& graph, const std
             const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
             glViewport(0, 0, resolution, resolution);
-            const GLuint program = program_.id();
-            glUseProgram(program);
             buffer.bindParticles();
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlicePiecesBinding, pieces_.id());
             glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
@@ -73,6 +74,8 @@ gpu::ResourceHandle LightSliceDepositPass::add(gpu::FrameGraph& graph, const std
             glBindVertexArray(vertexArray_.id());
             int firstLayer = 0;
             for (std::size_t v = 0; v < views.size(); ++v) {
+                const GLuint program = views[v].view.perspective ? perspective_.id() : orthographic_.id();
+                glUseProgram(program);
                 setDepositUniforms(program, views[v]);
                 glProgramUniform1i(program, kFirstPieceLocation, firstPiece[v]);
                 glProgramUniform1i(program, kFirstLayerLocation, firstLayer);

@@ -24,7 +24,7 @@ public:
                                const ParticleGpuBuffer& buffer, std::vector<std::uint32_t> pieces, std::vector<int> firstPiece);
 
 private:
-    gpu::Program program_;
+    gpu::Program orthographic_, perspective_;  // light_slice_deposit.* without and with LIGHT_PERSPECTIVE
     gpu::Texture kernelTable_;
     gpu::Buffer pieces_;
     std::size_t capacity_ = 0;
