@@ -22,6 +22,19 @@ float erfApprox(float x) {
 // no 1 − erf cancels.
 float erfDifference(float a, float ga, float b, float gb) { return a >= 0.0 ? ga - gb : b <= 0.0 ? gb - ga : 2.0 - ga - gb; }
 
+// A particle of unit radius and unit peak extinction: its optical depth along a ray at impact
+// parameter β between μ = lo and hi past the closest point (in radii), within the sphere:
+// kernelSegment(β, hi) − kernelSegment(β, lo) (kernel_table.glsl) in closed form, three exp in
+// all. Where one table fetch a fragment is most of the work (the slice deposit), this is cheaper
+// on llvmpipe than two, and exact where the table is bilinear.
+float kernelSpan(float beta, float lo, float hi) {
+    const float sk = 2.1213203435596424;  // √KERNEL_FALLOFF
+    float h = sqrt(max(1.0 - beta * beta, 0.0));
+    float a = sk * clamp(lo, -h, h), b = sk * clamp(hi, -h, h);
+    float ga = erfcPolynomial(abs(a)) * exp(-a * a), gb = erfcPolynomial(abs(b)) * exp(-b * b);
+    return (HALF_SQRT_PI / sk) * exp(-KERNEL_FALLOFF * beta * beta) * erfDifference(a, ga, b, gb);
+}
+
 // φ(α) / (1 − Φ(α)) of the standard normal (the mean of its part beyond α). For α ≥ 0 the
 // exp(−α²/2) of φ and of erfc cancel, so it stays exact far into the tail.
 float inverseMillsRatio(float alpha) {

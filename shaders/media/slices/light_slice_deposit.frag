@@ -1,11 +1,10 @@
 #version 450 core
 // Light-slice deposit: the optical depth one particle puts between two slice planes along the light
-// ray through this texel, from the pre-integrated kernel table (one fetch per plane), added
-// into the slab's layer. Optical depth adds, so the order pieces arrive in cannot change the sum.
+// ray through this texel, in closed form (optics.glsl kernelSpan), added into the slab's layer. Optical depth adds, so the order pieces arrive in cannot change the sum.
 // Works in the light's view space, where the light looks down −Z from the origin (perspective) or
 // rays run down −Z from z = 0 (orthographic), so view depth is −z.
 #include "common/math.glsl"
-#include "media/common/kernel_table.glsl"
+#include "media/common/optics.glsl"
 
 // LIGHT_PERSPECTIVE: a point or spot light's view, compile-time (light_slice_deposit_pass.cpp):
 // llvmpipe ran both sides of a test of the view's kind (cumulus fast's pass: 22%).
@@ -33,6 +32,6 @@ void main() {
     lo = vSlab.x + c.z;        // ray parameter = view depth = −z
     hi = vSlab.y + c.z;
 #endif
-    float segment = kernelSegment(beta, hi * invRadius) - kernelSegment(beta, lo * invRadius);
+    float segment = kernelSpan(beta, lo * invRadius, hi * invRadius);
     outDepth = vSlab.z * radius * max(segment, 0.0);
 }

@@ -6,7 +6,6 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "common/kernel_table.h"
 #include "nimbus/media/gpu_bindings.h"
 #include "nimbus/gpu/shader_program.h"
 
@@ -32,8 +31,7 @@ LightSliceDepositPass::LightSliceDepositPass()
     : orthographic_(gpu::compileProgram({.vertex = "media/slices/light_slice_deposit.vert", .fragment = "media/slices/light_slice_deposit.frag"})),
       perspective_(gpu::compileProgram({.vertex = "media/slices/light_slice_deposit.vert",
                                         .fragment = "media/slices/light_slice_deposit.frag",
-                                        .defines = {"LIGHT_PERSPECTIVE"}})),
-      kernelTable_(createKernelTable()) {}
+                                        .defines = {"LIGHT_PERSPECTIVE"}})) {}
 
 bool LightSliceDepositPass::supported() { return epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array"); }
 
@@ -69,7 +67,6 @@ gpu::ResourceHandle LightSliceDepositPass::add(gpu::FrameGraph& graph, const std
             glViewport(0, 0, resolution, resolution);
             buffer.bindParticles();
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlicePiecesBinding, pieces_.id());
-            glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
             gpu::applyPipeline(kSliceAdd);
             glBindVertexArray(vertexArray_.id());
             int firstLayer = 0;

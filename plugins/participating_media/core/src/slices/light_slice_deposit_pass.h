@@ -25,7 +25,6 @@ public:
 
 private:
     gpu::Program orthographic_, perspective_;  // light_slice_deposit.* without and with LIGHT_PERSPECTIVE
-    gpu::Texture kernelTable_;
     gpu::Buffer pieces_;
     std::size_t capacity_ = 0;
     std::vector<std::uint32_t> staging_;  // this frame's pieces, uploaded when the pass runs
