@@ -43,8 +43,7 @@ LampNodes lampNodes(int i, vec3 origin, vec3 dir, vec2 lit, float kernelAt, floa
 
 // Node j (0 ≤ j < LAMP_NODES): its ray parameter and weight (Jacobian and 1/d² included:
 // Σ w_j f(t_j) ≈ the integral). The rule's constants are selected, not indexed: the splats' loop
-// over the nodes does not unroll, and llvmpipe runs an index that varies by lane lane by lane
-// (campfire's fast splats: 3 ms).
+// over the nodes does not unroll, and llvmpipe runs an index that varies by lane lane by lane.
 vec2 lampNode(LampNodes q, int j) {
     if (j < LAMP_NEAR_NODES) {
         // Eight-point Gauss–Legendre in φ: nodes ±x_i, i = j / 2.

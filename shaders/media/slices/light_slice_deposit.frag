@@ -1,13 +1,14 @@
 #version 450 core
 // Light-slice deposit: the optical depth one particle puts between two slice planes along the light
-// ray through this texel, in closed form (optics.glsl kernelSpan), added into the slab's layer. Optical depth adds, so the order pieces arrive in cannot change the sum.
+// ray through this texel, in closed form (optics.glsl kernelSpan), added into the slab's layer.
+// Optical depth adds, so the order pieces arrive in cannot change the sum.
 // Works in the light's view space, where the light looks down −Z from the origin (perspective) or
 // rays run down −Z from z = 0 (orthographic), so view depth is −z.
 #include "common/math.glsl"
 #include "media/common/optics.glsl"
 
 // LIGHT_PERSPECTIVE: a point or spot light's view, compile-time (light_slice_deposit_pass.cpp):
-// llvmpipe ran both sides of a test of the view's kind (cumulus fast's pass: 22%).
+// llvmpipe runs both sides of a test of the view's kind, on every fragment.
 
 flat in vec4 vCentreRadius;
 flat in vec4 vSlab;

@@ -7,8 +7,8 @@
 #include "media/bindings.glsl"
 layout(binding = MEDIA_SLABS_UNIT) uniform sampler2DArray uSlabs;
 // SLICES: the view's slice count, compile-time (light_slice_prefix_pass.cpp): with a constant count
-// the loop unrolls and every index into `values` is a constant, where llvmpipe ran a varying one
-// lane by lane (the pass took twice as long).
+// the loop unrolls and every index into `values` is a constant, where llvmpipe runs a varying one
+// lane by lane.
 #ifndef SLICES
 #error "light_slice_prefix.frag needs SLICES"
 #endif
