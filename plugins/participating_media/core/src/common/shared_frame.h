@@ -26,7 +26,8 @@ struct SliceView {
     int firstLayer = 0;
     // Texels per side this view's particles are drawn at (0: the slice array's). A lamp's cube
     // faces may need fewer than the array holds for the sun; the light-slice pass draws them
-    // small and scales them up into their layers (light_slice_pass.cpp).
+    // small (light_slice_pass.cpp) and the upscale pass scales them up into their layers
+    // (light_slice_upscale_pass.cpp).
     int resolution = 0;
     // A crop (planning/slice_crop.h): the index of the whole view whose optical depth at this view's
     // first plane seeds it, so its first slab takes no particles; −1 for a whole view.

@@ -11,59 +11,60 @@
 
 namespace nimbus::media {
 
+SmallSliceLayout smallSliceLayout(const std::vector<SliceView>& views, int resolution) {
+    SmallSliceLayout layout;
+    for (const SliceView& v : views) {
+        const bool small = v.resolution > 0 && v.resolution < resolution;
+        layout.smallFirstLayer.push_back(small ? layout.layers : -1);
+        if (!small) continue;
+        layout.layers += (v.slices + 3) / 4;
+        layout.size = std::max(layout.size, v.resolution);
+    }
+    return layout;
+}
 
 LightSlicePass::LightSlicePass() {
     program_ = gpu::compileProgram({.vertex = "media/slices/light_slices.vert", .fragment = "media/slices/light_slices.frag"});
 }
 
-gpu::ResourceHandle LightSlicePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
+LightSlicePass::Output LightSlicePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
                                            const ParticleGpuBuffer& buffer) {
     int layers = 0;
     for (const auto& v : views) layers = std::max(layers, v.firstLayer + (v.slices + 3) / 4);
+    const SmallSliceLayout small = smallSliceLayout(views, resolution);
     struct Data {
-        gpu::ResourceHandle slices;
+        gpu::ResourceHandle slices, small;
     };
     const auto& data = graph.addPass<Data>(
         "light_slices",
         [&](gpu::PassBuilder& builder, Data& d) {
             d.slices = builder.create("light_slices", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, resolution, resolution, layers, 1});
+            if (small.layers > 0)
+                d.small = builder.create("light_slices_small", {GL_TEXTURE_2D_ARRAY, GL_RGBA32F, small.size, small.size, small.layers, 1});
         },
-        [this, views, resolution, &buffer](const gpu::PassResources& resources, const Data& d) {
+        [this, views, resolution, small, &buffer](const gpu::PassResources& resources, const Data& d) {
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             glUseProgram(program_.id());
             buffer.bindParticles();
             glBindVertexArray(vertexArray_.id());
-            for (const auto& v : views) drawView(fbo.id(), resources.id(d.slices), v, resolution, buffer);
+            for (std::size_t i = 0; i < views.size(); ++i) {
+                const SliceView& v = views[i];
+                SliceView target = v;
+                GLuint texture = resources.id(d.slices);
+                int own = resolution;
+                if (small.smallFirstLayer[i] >= 0) {
+                    target.firstLayer = small.smallFirstLayer[i];
+                    texture = resources.id(d.small);
+                    own = v.resolution;
+                }
+                bindSliceLayers(fbo.id(), texture, target);
+                setAdditiveSliceState(own);
+                setParticleSliceUniforms(program_.id(), v, own);
+                glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
+                unbindSliceLayers(fbo.id(), target);
+            }
         });
-    return data.slices;
-}
-
-void LightSlicePass::drawView(GLuint framebuffer, GLuint slices, const SliceView& v, int resolution, const ParticleGpuBuffer& buffer) {
-    const int own = v.resolution > 0 ? std::min(v.resolution, resolution) : resolution;
-    const int layers = (v.slices + 3) / 4;
-    SliceView target = v;
-    GLuint texture = slices;
-    if (own < resolution) {  // drawn into the small array's first layers, then scaled up
-        if (!small_ || small_.desc().width != own || small_.desc().depth < layers)
-            small_ = gpu::Texture({GL_TEXTURE_2D_ARRAY, GL_RGBA32F, own, own, std::max(layers, small_ ? small_.desc().depth : 0), 1});
-        target.firstLayer = 0;
-        texture = small_.id();
-    }
-    bindSliceLayers(framebuffer, texture, target);
-    setAdditiveSliceState(own);
-    setParticleSliceUniforms(program_.id(), v, own);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(buffer.count()));
-    unbindSliceLayers(framebuffer, target);
-    if (own == resolution) return;
-    const gpu::Framebuffer source = gpu::createFramebuffer();
-    for (int a = 0; a < layers; ++a) {
-        glNamedFramebufferTextureLayer(source.id(), GL_COLOR_ATTACHMENT0, texture, 0, a);
-        glNamedFramebufferTextureLayer(framebuffer, GL_COLOR_ATTACHMENT0, slices, 0, v.firstLayer + a);
-        glNamedFramebufferReadBuffer(source.id(), GL_COLOR_ATTACHMENT0);
-        glNamedFramebufferDrawBuffer(framebuffer, GL_COLOR_ATTACHMENT0);
-        glBlitNamedFramebuffer(source.id(), framebuffer, 0, 0, own, own, 0, 0, resolution, resolution, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    }
-    glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, 0, 0);
+    return {data.slices, data.small};
 }
 
 }  // namespace nimbus::media

@@ -22,6 +22,7 @@ inline constexpr std::size_t kMaxHostLights = gpu::kMaxLights;  // MEDIA_MAX_LIG
 // Texture units.
 inline constexpr GLuint kSlabsUnit = 0;           // MEDIA_SLABS_UNIT
 inline constexpr GLuint kPackedSlicesUnit = 0;    // MEDIA_PACKED_SLICES_UNIT (light_slice_intervals.frag)
+inline constexpr GLuint kSmallSlicesUnit = 0;     // MEDIA_SMALL_SLICES_UNIT (light_slice_upscale.frag)
 inline constexpr GLuint kHostDepthUnit = 0;       // MEDIA_HOST_DEPTH_UNIT
 inline constexpr GLuint kDepthUsedUnit = 0;       // MEDIA_DEPTH_USED_UNIT (edge_stencil.frag)
 inline constexpr GLuint kReducedMediaUnit = 0;    // MEDIA_REDUCED_MEDIA_UNIT (seam_marks.frag)
