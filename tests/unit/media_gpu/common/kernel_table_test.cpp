@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "compute_probe.h"
 #include "gpu/gl_test_context.h"
 #include "media_core/numeric_quadrature.h"
 #include "nimbus/gpu/gl_objects.h"
@@ -80,22 +81,18 @@ TEST(KernelTable, BilinearFetchIsWithinTwoTenthsOfAPercent) {
 
 class KernelColumnGlsl : public gpu::test::GlTest {};
 
+// A kernel probe: one value per input item, the item count its only uniform (location 0).
+template <typename Out, typename In>
+std::vector<Out> runItemProbe(const char* shader, const std::vector<In>& items) {
+    return test::runComputeProbe<Out>(shader, items, items.size(),
+                                      [&](GLuint program) { glProgramUniform1ui(program, 0, static_cast<GLuint>(items.size())); });
+}
+
 TEST_F(KernelColumnGlsl, MatchesTheWholeChordsSegmentWithinAMillionthOfThePeak) {
     std::vector<float> betas;
     for (int i = 0; i <= 1000; ++i) betas.push_back(static_cast<float>(i) / 1000.0f);
     betas.push_back(1.5f);  // past the sphere: no column
-    const gpu::Program program =
-        gpu::compileProgram({.compute = "kernel_column_probe.comp", .folder = std::filesystem::path(NIMBUS_MEDIA_GPU_TEST_SHADERS)});
-    const gpu::Buffer input = gpu::createBuffer(betas.size() * sizeof(float), betas.data(), 0);
-    const gpu::Buffer output = gpu::createBuffer(betas.size() * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-    glUseProgram(program.id());
-    glProgramUniform1ui(program.id(), 0, static_cast<GLuint>(betas.size()));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
-    glDispatchCompute(static_cast<GLuint>((betas.size() + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<float> values(betas.size());
-    glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(values.size() * sizeof(float)), values.data());
+    const std::vector<float> values = runItemProbe<float>("kernel_column_probe.comp", betas);
     const double peak = kernelSegment(0.0, 1.0);
     double worst = 0.0;
     for (std::size_t i = 0; i < betas.size(); ++i)
@@ -113,18 +110,7 @@ TEST_F(KernelColumnGlsl, SpanMatchesTheDifferenceOfSegmentsWithinAMillionthOfThe
     for (float beta : {0.0f, 0.2f, 0.5f, 0.8f, 0.95f, 0.999f, 1.0f, 1.5f})
         for (float lo : {-2.0f, -1.0f, -0.7f, -0.3f, -0.001f, 0.0f, 0.25f, 0.6f, 0.9f, 1.2f})
             for (float length : {0.0f, 0.001f, 0.05f, 0.3f, 1.0f, 3.0f}) spans.emplace_back(beta, lo, lo + length, 0.0f);
-    const gpu::Program program =
-        gpu::compileProgram({.compute = "kernel_span_probe.comp", .folder = std::filesystem::path(NIMBUS_MEDIA_GPU_TEST_SHADERS)});
-    const gpu::Buffer input = gpu::createBuffer(spans.size() * sizeof(glm::vec4), spans.data(), 0);
-    const gpu::Buffer output = gpu::createBuffer(spans.size() * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-    glUseProgram(program.id());
-    glProgramUniform1ui(program.id(), 0, static_cast<GLuint>(spans.size()));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
-    glDispatchCompute(static_cast<GLuint>((spans.size() + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<float> values(spans.size());
-    glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(values.size() * sizeof(float)), values.data());
+    const std::vector<float> values = runItemProbe<float>("kernel_span_probe.comp", spans);
     const double peak = kernelSegment(0.0, 1.0);
     double worst = 0.0;
     for (std::size_t i = 0; i < spans.size(); ++i) {

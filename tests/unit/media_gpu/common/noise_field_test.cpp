@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "compute_probe.h"
 #include "gpu/gl_test_context.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/shader_program.h"
@@ -42,26 +43,17 @@ struct Probe {
 
 Probe runGpu(const NoiseParams& n, bool ellipsoid, const std::vector<glm::vec3>& points) {
     // The probe's own folder first; its #include of media/common/noise.glsl finds the built-in copy.
-    const gpu::Program program =
-        gpu::compileProgram({.compute = "noise_probe.comp", .folder = std::filesystem::path(NIMBUS_MEDIA_GPU_TEST_SHADERS)});
     std::vector<glm::vec4> in;
     for (std::size_t i = 0; i < points.size(); ++i) {
         in.push_back(glm::vec4(points[i], 0.0f));
         in.push_back(glm::vec4(unitFor(i), 0.0f));
     }
-    const gpu::Buffer input = gpu::createBuffer(in.size() * sizeof(glm::vec4), in.data(), 0);
-    const gpu::Buffer output = gpu::createBuffer(points.size() * sizeof(glm::vec2), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-    glUseProgram(program.id());
-    glProgramUniform4ui(program.id(), 0, n.kind, n.octaves, n.seed, ellipsoid ? 1u : 0u);
-    glProgramUniform4f(program.id(), 1, n.gain, n.invAmplitude, n.coverage, n.invOneMinusCoverage);
-    glProgramUniform1f(program.id(), 2, n.invFalloff);
-    glProgramUniform1ui(program.id(), 3, static_cast<GLuint>(points.size()));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
-    glDispatchCompute(static_cast<GLuint>((points.size() + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<glm::vec2> values(points.size());
-    glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(values.size() * sizeof(glm::vec2)), values.data());
+    const std::vector<glm::vec2> values = test::runComputeProbe<glm::vec2>("noise_probe.comp", in, points.size(), [&](GLuint program) {
+        glProgramUniform4ui(program, 0, n.kind, n.octaves, n.seed, ellipsoid ? 1u : 0u);
+        glProgramUniform4f(program, 1, n.gain, n.invAmplitude, n.coverage, n.invOneMinusCoverage);
+        glProgramUniform1f(program, 2, n.invFalloff);
+        glProgramUniform1ui(program, 3, static_cast<GLuint>(points.size()));
+    });
     Probe out;
     for (const glm::vec2& v : values) {
         out.pattern.push_back(v.x);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/kernel_table.h"
+#include "compute_probe.h"
 #include "gpu/gl_test_context.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/shader_program.h"
@@ -41,19 +42,10 @@ TEST_F(SliceLookupGlsl, ACubicExactAtThePlanesThatNeverFallsAndFollowsTheParticl
 
     std::vector<float> depths;
     for (int i = 0; i <= 2000; ++i) depths.push_back(static_cast<float>(3.0 + 5.0 * i / 2000.0));
-    const gpu::Program program =
-        gpu::compileProgram({.compute = "slice_lookup_probe.comp", .folder = std::filesystem::path(NIMBUS_MEDIA_GPU_TEST_SHADERS)});
-    const gpu::Buffer input = gpu::createBuffer(depths.size() * sizeof(float), depths.data(), 0);
-    const gpu::Buffer output = gpu::createBuffer(depths.size() * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
-    glUseProgram(program.id());
-    glProgramUniform1ui(program.id(), 0, static_cast<GLuint>(depths.size()));
-    glProgramUniform4f(program.id(), 1, 0.0f, static_cast<float>(kNear), static_cast<float>(kFar), static_cast<float>(kPlanes));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, input.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, output.id());
-    glDispatchCompute(static_cast<GLuint>((depths.size() + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<float> values(depths.size());
-    glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(values.size() * sizeof(float)), values.data());
+    const std::vector<float> values = test::runComputeProbe<float>("slice_lookup_probe.comp", depths, depths.size(), [&](GLuint program) {
+        glProgramUniform1ui(program, 0, static_cast<GLuint>(depths.size()));
+        glProgramUniform4f(program, 1, 0.0f, static_cast<float>(kNear), static_cast<float>(kFar), static_cast<float>(kPlanes));
+    });
 
     const double total = plane(kPlanes);
     double cubic = 0.0, line = 0.0;

@@ -65,7 +65,8 @@ void expectUpscaled(bool layered) {
     gpu::TexturePool pool;
     gpu::FrameGraph graph(pool);
     LightSliceUpscalePass pass(layered);
-    const LightSlicePass::Output drawn{graph.importTexture("slices", slices), graph.importTexture("small", smallTexture)};
+    const LightSlicePass::Output drawn{graph.importTexture("slices", slices), graph.importTexture("small", smallTexture),
+                                       {.smallFirstLayer = {-1, 0, 2}, .size = kSmallSide, .layers = smallLayers}};
     const gpu::ResourceHandle out = pass.add(graph, views, kResolution, drawn);
     graph.extract(out);
     graph.compile();

@@ -11,6 +11,7 @@
 
 namespace nimbus::media {
 
+namespace {
 SmallSliceLayout smallSliceLayout(const std::vector<SliceView>& views, int resolution) {
     SmallSliceLayout layout;
     for (const SliceView& v : views) {
@@ -22,6 +23,7 @@ SmallSliceLayout smallSliceLayout(const std::vector<SliceView>& views, int resol
     }
     return layout;
 }
+}  // namespace
 
 LightSlicePass::LightSlicePass() {
     program_ = gpu::compileProgram({.vertex = "media/slices/light_slices.vert", .fragment = "media/slices/light_slices.frag"});
@@ -64,7 +66,7 @@ LightSlicePass::Output LightSlicePass::add(gpu::FrameGraph& graph, const std::ve
                 unbindSliceLayers(fbo.id(), target);
             }
         });
-    return {data.slices, data.small};
+    return {data.slices, data.small, small};
 }
 
 }  // namespace nimbus::media

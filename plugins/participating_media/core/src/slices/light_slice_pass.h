@@ -17,7 +17,6 @@ struct SmallSliceLayout {
     int size = 0;                      // the small array's side: the largest small view's
     int layers = 0;                    // its layers (0: no view is drawn small)
 };
-SmallSliceLayout smallSliceLayout(const std::vector<SliceView>& views, int resolution);
 
 // Light slices (docs/design.md §3 light-slice system): every slice view renders all particles once,
 // additively, into ceil(K/4) layers of one RGBA32F array. A view whose SliceView::resolution is
@@ -28,6 +27,7 @@ public:
     struct Output {
         gpu::ResourceHandle slices;  // the array; a small view's layers are not written here
         gpu::ResourceHandle small;   // the small views' array, invalid when there is none
+        SmallSliceLayout layout;     // where each view went
     };
     LightSlicePass();
     Output add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution, const ParticleGpuBuffer& buffer);

@@ -27,7 +27,6 @@ LightSliceUpscalePass::LightSliceUpscalePass(bool layered)
 gpu::ResourceHandle LightSliceUpscalePass::add(gpu::FrameGraph& graph, const std::vector<SliceView>& views, int resolution,
                                                const LightSlicePass::Output& drawn) {
     if (!drawn.small.valid()) return drawn.slices;
-    const SmallSliceLayout small = smallSliceLayout(views, resolution);
     struct Data {
         gpu::ResourceHandle slices, small;
     };
@@ -37,7 +36,7 @@ gpu::ResourceHandle LightSliceUpscalePass::add(gpu::FrameGraph& graph, const std
             d.slices = builder.write(drawn.slices);
             d.small = builder.read(drawn.small);
         },
-        [this, views, resolution, small](const gpu::PassResources& resources, const Data& d) {
+        [this, views, resolution, small = drawn.layout](const gpu::PassResources& resources, const Data& d) {
             const GLuint slices = resources.id(d.slices), source = resources.id(d.small);
             gpu::Framebuffer fbo = gpu::createFramebuffer();
             if (layered_) glNamedFramebufferTexture(fbo.id(), GL_COLOR_ATTACHMENT0, slices, 0);  // layered: gl_Layer picks the layer
