@@ -72,7 +72,9 @@ vec3 vertexLight(int i, SurfaceBrdf brdf, vec3 n, vec3 v) {
     // A crop's view follows its whole one; vCropClip lies outside every crop where there is none.
     float depth = mediaCroppedOpticalDepthAt(mediaSliceViews[max(view, 0)], mediaSliceViews[max(view, 0) + 1], vSliceClip[i], vCropClip[i], vSliceDepth[i]);
 #else
-    float depth = mediaViewOpticalDepthAt(mediaSliceViews[max(view, 0)], vSliceClip[i], vSliceDepth[i]);
+    // A vertex light is a sun or a spot (one view): which, known here, spares the lookup the test.
+    int kind = (VERTEX_DIRECTIONAL_LIGHTS & (1u << i)) != 0u ? MEDIA_VIEW_ORTHOGRAPHIC : MEDIA_VIEW_PERSPECTIVE;
+    float depth = mediaViewOpticalDepthAt(mediaSliceViews[max(view, 0)], kind, vSliceClip[i], vSliceDepth[i]);
 #endif
     if (mediaSliceCount.x != 0 && view >= 0) transmittance = exp(-depth);
 #endif

@@ -21,7 +21,6 @@
 #define MEDIA_VOXEL_EMISSION_UNIT 7    // raymarch: rgb σ_t·emission, a σ_t·g
 #define MEDIA_SLABS_UNIT 0
 #define MEDIA_PACKED_SLICES_UNIT 0    // light_slice_intervals.frag: the slices as the slice passes wrote them
-#define MEDIA_SMALL_SLICES_UNIT 0     // light_slice_upscale.frag: the views drawn small
 #define MEDIA_HOST_DEPTH_UNIT 0       // a standard-Z host depth, re-encoded by media_host_depth
 #define MEDIA_DEPTH_USED_UNIT 0       // edge_stencil.frag: the depth each reduced media texel used
 #define MEDIA_REDUCED_MEDIA_UNIT 0    // seam_marks.frag: the reduced media target

@@ -59,7 +59,8 @@ SliceRead sliceRead(GpuLightView v, vec3 p) {
     r.f = s >= float(K) ? 1.0 : s - float(k);
     r.nearPlane = v.params.y + float(k) * spacing;
     r.farPlane = r.nearPlane + spacing;
-    vec2 size = vec2(textureSize(mediaSlices, 0).xy);
+    // The view's own texels: a lamp's may be fewer than the array's (light_transmittance.glsl mediaSliceCount).
+    vec2 size = vec2(r.perspective && mediaSliceCount.z > 0 ? ivec2(mediaSliceCount.z) : textureSize(mediaSlices, 0).xy);
     vec2 texel = uv * size - 0.5;
     vec2 base = floor(texel), w = texel - base;
     for (int j = 0; j < 4; ++j) {

@@ -13,16 +13,35 @@
 
 const int MEDIA_MAX_LIGHTS = 64;  // nimbus/media/gpu_bindings.h kMaxHostLights
 layout(std140, binding = MEDIA_SLICE_VIEWS_BINDING) uniform MediaSliceViews {
-    ivec4 mediaSliceCount;                      // x: slice views this frame (0: none)
+    // x: slice views this frame (0: none). A lamp's views may hold fewer texels than the array's
+    // side (media SliceView::resolution), in their layers' first ones: y their share of the side,
+    // w the largest uv a lookup takes there (float bits; 1 and 1 where every view is whole), z
+    // their texels per side (0: the array's).
+    ivec4 mediaSliceCount;
     ivec4 mediaLightSlices[MEDIA_MAX_LIGHTS];   // per host light: x first view (−1: none), y view count
     GpuLightView mediaSliceViews[MAX_LIGHT_VIEWS];
 };
 layout(binding = MEDIA_SLICES_UNIT) uniform sampler2DArray mediaSlices;
 
+// A view's kind for the lookups below: orthographic, perspective (a lamp's), or as its params say.
+// A caller that knows passes a constant, and the other way folds away: on llvmpipe the test and
+// the scaling cost campfire's opaque pass half a millisecond for its sun's lookups.
+const int MEDIA_VIEW_ORTHOGRAPHIC = 0, MEDIA_VIEW_PERSPECTIVE = 1, MEDIA_VIEW_EITHER = -1;
+
+// Where uv, across a view's image, lies in its layers: a lamp's view of fewer texels than the array
+// fills their first ones, and its lookups stay half a texel inside them, so a bilinear tap weighs
+// the cleared texel beyond them 0. Other views, and every view where all are whole (share 1),
+// keep uv as it is. The share comes from the header, not the view: worked out per lookup from the
+// view's texel size, it cost campfire's opaque pass a millisecond.
+vec2 mediaSliceLayerUv(vec4 params, int kind, vec2 uv) {
+    bool lamp = kind == MEDIA_VIEW_EITHER ? params.x > 0.5 : kind == MEDIA_VIEW_PERSPECTIVE;
+    return lamp ? min(uv * intBitsToFloat(mediaSliceCount.y), vec2(intBitsToFloat(mediaSliceCount.w))) : uv;
+}
+
 // The optical depth one light view's slices hold at a point with clip coordinates `clip` and view
 // depth `depth` in that view. Both are linear in the point, so a host may interpolate them per vertex.
-// `params`, `firstLayer`: the view's params and params2.x.
-float mediaSliceOpticalDepthAt(vec4 params, float firstLayer, vec4 clip, float depth) {
+// `params`, `firstLayer`: the view's params and params2.x; `kind`: MEDIA_VIEW_*.
+float mediaSliceOpticalDepthAt(vec4 params, float firstLayer, int kind, vec4 clip, float depth) {
     vec2 uv;
     if (!lightViewClipUv(clip, uv)) return 0.0;  // slices cover the medium: outside them there is none
     int K = int(params.w);
@@ -30,7 +49,7 @@ float mediaSliceOpticalDepthAt(vec4 params, float firstLayer, vec4 clip, float d
     if (s <= 0.0) return 0.0;
     // The enclosing interval, or the last one past the medium.
     int k = min(int(floor(s)), K - 1);
-    vec4 q = texture(mediaSlices, vec3(uv, firstLayer + float(k)));
+    vec4 q = texture(mediaSlices, vec3(mediaSliceLayerUv(params, kind, uv), firstLayer + float(k)));
     if (s >= float(K)) return q.z;
     // Monotone cubic Hermite between planes k and k + 1 (Fritsch and Carlson): the slopes from the
     // neighbours, limited to [0, 3δ] so τ never falls or overshoots its ends.
@@ -39,7 +58,7 @@ float mediaSliceOpticalDepthAt(vec4 params, float firstLayer, vec4 clip, float d
     return q.y + t * (m0 + t * (3.0 * delta - 2.0 * m0 - m1 + t * (m0 + m1 - 2.0 * delta)));
 }
 
-float mediaViewOpticalDepthAt(GpuLightView v, vec4 clip, float depth) { return mediaSliceOpticalDepthAt(v.params, v.params2.x, clip, depth); }
+float mediaViewOpticalDepthAt(GpuLightView v, int kind, vec4 clip, float depth) { return mediaSliceOpticalDepthAt(v.params, v.params2.x, kind, clip, depth); }
 
 // MEDIA_SLICE_CROPS: the lookups below by light read a light's crop (count 2) where it holds p. It
 // is a define, not a test of the count, because llvmpipe pays for the test's arithmetic on every
@@ -76,12 +95,12 @@ float mediaCroppedOpticalDepthAt(GpuLightView whole, GpuLightView crop, vec4 cli
     vec4 params = whole.params;
     float layer = whole.params2.x;
     mediaChooseCrop(crop, cropClip, depth, params, layer, clip);
-    return mediaSliceOpticalDepthAt(params, layer, clip, depth);
+    return mediaSliceOpticalDepthAt(params, layer, MEDIA_VIEW_ORTHOGRAPHIC, clip, depth);  // a crop's light is directional
 }
 
 // The optical depth one light view's slices hold at p.
 float mediaViewOpticalDepth(GpuLightView v, vec3 p) {
-    return mediaViewOpticalDepthAt(v, v.viewProjection * vec4(p, 1.0), -(v.view * vec4(p, 1.0)).z);
+    return mediaViewOpticalDepthAt(v, MEDIA_VIEW_EITHER, v.viewProjection * vec4(p, 1.0), -(v.view * vec4(p, 1.0)).z);
 }
 
 // The view of host light `light` (at origin-relative `lightPosition`) whose slices hold p, or −1.
@@ -114,7 +133,7 @@ float mediaOpticalDepthOf(int light, int count, vec3 lightPosition, vec3 p) {
         mediaChooseCrop(mediaSliceViews[first + 1], mediaCropClip(mediaSliceViews[first], mediaSliceViews[first + 1], clip), depth, params,
                         layer, clip);
 #endif
-    return mediaSliceOpticalDepthAt(params, layer, clip, depth);
+    return mediaSliceOpticalDepthAt(params, layer, count == 6 ? MEDIA_VIEW_PERSPECTIVE : MEDIA_VIEW_EITHER, clip, depth);
 }
 
 float mediaOpticalDepth(int light, vec3 lightPosition, vec3 p) {

@@ -188,9 +188,6 @@ TEST_F(MediaGpuLayout, EveryBindingPointMatchesGpuBindings) {
     EXPECT_EQ(samplerUnit(prefix.id(), "uSlabs"), static_cast<GLint>(kSlabsUnit));
     const gpu::Program intervals = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/slices/light_slice_intervals.frag"});
     EXPECT_EQ(samplerUnit(intervals.id(), "uPacked"), static_cast<GLint>(kPackedSlicesUnit));
-    const gpu::Program upscale =
-        gpu::compileProgram({.vertex = "media/slices/light_slice_upscale.vert", .fragment = "media/slices/light_slice_upscale.frag"});
-    EXPECT_EQ(samplerUnit(upscale.id(), "uSmall"), static_cast<GLint>(kSmallSlicesUnit));
     const gpu::Program hostDepth = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/frame/host_depth.frag"});
     EXPECT_EQ(samplerUnit(hostDepth.id(), "uHostDepth"), static_cast<GLint>(kHostDepthUnit));
     const gpu::Program stencil = gpu::compileProgram({.vertex = "fullscreen.vert", .fragment = "media/blocks/block_seam_stencil.frag"});

@@ -5,8 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <limits>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "common/kernel_table.h"
 #include "compute_probe.h"
@@ -76,6 +80,43 @@ TEST_F(SliceLookupGlsl, ACubicExactAtThePlanesThatNeverFallsAndFollowsTheParticl
     }
     std::printf("[slice lookup] worst error over the ray: cubic %.4f, a straight line %.4f, of a column of %.4f\n", cubic, line, total);
     EXPECT_LT(cubic, 0.4 * line);  // measured 0.31
+}
+
+// A lamp's view of 4 texels in an array of 8 lies in its layer's first texels (media
+// slices/slice_view.h sliceTexels): read across its whole image, bilinear as over a 4-texel image
+// with clamped edges, and never reading the texels past the one cleared beyond it (NaN here).
+TEST_F(SliceLookupGlsl, ALampViewOfFewerTexelsIsReadInItsLayersFirstTexels) {
+    constexpr int kArray = 8, kOwn = 4;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<glm::vec4> texels(kArray * kArray, glm::vec4(nan));
+    const auto value = [](int x, int y) { return static_cast<float>(1 + x + 10 * y); };
+    for (int y = 0; y <= kOwn; ++y)
+        for (int x = 0; x <= kOwn; ++x) texels[static_cast<std::size_t>(y * kArray + x)] = glm::vec4(x < kOwn && y < kOwn ? value(x, y) : 0.0f);
+    const gpu::Texture slices({.target = GL_TEXTURE_2D_ARRAY, .format = GL_RGBA32F, .width = kArray, .height = kArray, .depth = 1});
+    glTextureSubImage3D(slices.id(), 0, 0, 0, 0, kArray, kArray, 1, GL_RGBA, GL_FLOAT, texels.data());
+    glBindTextureUnit(kSlicesUnit, slices.id());
+    const float share = static_cast<float>(kOwn) / kArray;
+    const glm::ivec4 header(1, std::bit_cast<int>(share), kOwn, std::bit_cast<int>(share - 0.5f / kArray));
+    const gpu::Buffer block = gpu::createBuffer(sizeof(GpuSliceViews), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferSubData(block.id(), 0, sizeof(header), &header);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kSliceViewsBinding, block.id());
+
+    std::vector<glm::vec2> uvs;
+    for (int y = 0; y <= 40; ++y)
+        for (int x = 0; x <= 40; ++x) uvs.emplace_back(x / 40.0f, y / 40.0f);
+    const std::vector<float> values = test::runComputeProbe<float>("slice_layer_uv_probe.comp", uvs, uvs.size(), [&](GLuint program) {
+        glProgramUniform1ui(program, 0, static_cast<GLuint>(uvs.size()));
+    });
+    for (std::size_t i = 0; i < uvs.size(); ++i) {
+        // Bilinear over the 4 texels, their centres at (t + 0.5) / 4, clamped at the edges.
+        const glm::vec2 at = glm::clamp(uvs[i] * static_cast<float>(kOwn) - 0.5f, glm::vec2(0.0f), glm::vec2(kOwn - 1));
+        const glm::ivec2 base = glm::min(glm::ivec2(at), glm::ivec2(kOwn - 2));
+        const glm::vec2 f = at - glm::vec2(base);
+        const float expected = glm::mix(glm::mix(value(base.x, base.y), value(base.x + 1, base.y), f.x),
+                                        glm::mix(value(base.x, base.y + 1), value(base.x + 1, base.y + 1), f.x), f.y);
+        ASSERT_TRUE(std::isfinite(values[i])) << "uv " << uvs[i].x << " " << uvs[i].y;
+        EXPECT_NEAR(values[i], expected, 1e-3f) << "uv " << uvs[i].x << " " << uvs[i].y;
+    }
 }
 
 }  // namespace

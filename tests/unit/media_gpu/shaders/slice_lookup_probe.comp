@@ -11,5 +11,5 @@ layout(std430, binding = 1) writeonly buffer Values { float values[]; };
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    if (i < uCount) values[i] = mediaSliceOpticalDepthAt(uParams, 0.0, vec4(0.0, 0.0, 0.5, 1.0), depths[i]);
+    if (i < uCount) values[i] = mediaSliceOpticalDepthAt(uParams, 0.0, MEDIA_VIEW_EITHER, vec4(0.0, 0.0, 0.5, 1.0), depths[i]);
 }

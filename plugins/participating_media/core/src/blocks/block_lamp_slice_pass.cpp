@@ -22,12 +22,13 @@ gpu::ResourceHandle BlockLampSlicePass::add(gpu::FrameGraph& graph, gpu::Resourc
             const GLuint program = program_.id();
             for (const SliceView& v : views) {
                 if (!v.view.perspective) continue;
+                const int texels = sliceTexels(v, resolution);
                 bindSliceLayers(fbo.id(), r.id(d.slices), v, false);
-                setAdditiveSliceState(resolution);
+                setAdditiveSliceState(texels);
                 glUseProgram(program);
                 particles.bindParticles();
                 blocks.bindLampSliceParticles();
-                setParticleSliceUniforms(program, v, resolution);
+                setParticleSliceUniforms(program, v, texels);
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(blocks.lampSliceParticleCount()));
                 unbindSliceLayers(fbo.id(), v);

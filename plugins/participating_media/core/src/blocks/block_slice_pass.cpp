@@ -39,13 +39,14 @@ gpu::ResourceHandle BlockSlicePass::add(gpu::FrameGraph& graph, const std::vecto
             const GLuint program = program_.id();
             for (std::size_t i = 0; i < views.size(); ++i) {
                 const SliceView& v = views[i];
+                const int texels = sliceTexels(v, resolution);
                 bindSliceLayers(fbo.id(), r.id(d.slices), v);
-                setAdditiveSliceState(resolution);
+                setAdditiveSliceState(texels);
                 glUseProgram(program);
                 blocks.bind(i + 1);
                 glBindTextureUnit(kImpostorDepthsUnit, r.id(d.impostors[i]));
                 glBindTextureUnit(kSliceImpostorMomentsUnit, r.id(d.moments[i]));
-                setSliceViewUniforms(program, v, resolution);
+                setSliceViewUniforms(program, v, texels);
                 glBindVertexArray(vertexArray_.id());
                 glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(plans[i].tiles.size()));
                 unbindSliceLayers(fbo.id(), v);

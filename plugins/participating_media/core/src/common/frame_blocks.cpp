@@ -1,5 +1,6 @@
 #include "common/frame_blocks.h"
 
+#include <bit>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -36,7 +37,20 @@ void checkCubeFaces(const HostShadowMaps& shadows) {
     }
 }
 
-void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight) {
+namespace {
+// MediaSliceViews' first ivec4 (shaders/media/host/light_transmittance.glsl mediaSliceCount): x the
+// view count, y a lamp view's share of the array's side, z its texels per side (0: the array's), w
+// the largest uv a lookup takes in it; y and w as float bits, both 1 where every view is whole.
+glm::ivec4 sliceHeader(std::size_t views, SliceArrayLayout layout) {
+    const bool small = layout.lampTexels > 0 && layout.lampTexels < layout.arrayTexels;
+    const float share = small ? static_cast<float>(layout.lampTexels) / static_cast<float>(layout.arrayTexels) : 1.0f;
+    const float limit = small ? share - 0.5f / static_cast<float>(layout.arrayTexels) : 1.0f;
+    return {static_cast<int>(views), std::bit_cast<int>(share), small ? layout.lampTexels : 0, std::bit_cast<int>(limit)};
+}
+}  // namespace
+
+void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightView>& sliceViews, const std::vector<glm::ivec2>& perLight,
+                       SliceArrayLayout layout) {
     if (host.lights.size() > kMaxHostLights)
         throw InputError(std::to_string(host.lights.size()) + " lights in one frame; the media plugin takes at most " +
                          std::to_string(kMaxHostLights));
@@ -53,6 +67,7 @@ void FrameBlocks::pack(const HostFrame& host, const std::vector<gpu::GpuLightVie
     for (std::size_t i = 0; i < perLight.size() && i < perLight_.size(); ++i)
         if (perLight[i].y > 0) perLight_[i] = glm::ivec4(perLight[i], 0, 0);
     views_ = sliceViews;
+    sliceHeader_ = sliceHeader(views_.size(), layout);
     // Refused now, while the graph is set up, rather than half way through it.
     for (const auto& [count, what] : {std::pair{shadowViews_.size(), "shadow map views"}, std::pair{views_.size(), "light slice views"}})
         if (count > gpu::kMaxLightViews)
@@ -64,8 +79,7 @@ void FrameBlocks::upload() const {
     glNamedBufferSubData(frameBuffer_.id(), 0, sizeof(gpu::GpuFrame), &frame_);
     gpu::uploadBlock(lightsBuffer_, gpu::kMaxLights, lights_, "lights");
     gpu::uploadBlock(shadowViewsBuffer_, gpu::kMaxLightViews, shadowViews_, "shadow map views");
-    const glm::ivec4 count(static_cast<int>(views_.size()), 0, 0, 0);
-    glNamedBufferSubData(sliceViews_.id(), 0, sizeof(count), &count);
+    glNamedBufferSubData(sliceViews_.id(), 0, sizeof(sliceHeader_), &sliceHeader_);
     if (!perLight_.empty())
         glNamedBufferSubData(sliceViews_.id(), offsetof(GpuSliceViews, perLight), static_cast<GLsizeiptr>(perLight_.size() * sizeof(glm::ivec4)),
                              perLight_.data());

@@ -24,10 +24,9 @@ struct SliceView {
     glm::vec3 lightOrigin{0.0f};  // origin-relative light position (perspective views)
     int slices = 4;
     int firstLayer = 0;
-    // Texels per side this view's particles are drawn at (0: the slice array's). A lamp's cube
-    // faces may need fewer than the array holds for the sun; the light-slice pass draws them
-    // small (light_slice_pass.cpp) and the upscale pass scales them up into their layers
-    // (light_slice_upscale_pass.cpp).
+    // Texels per side of this view (0: the slice array's). A lamp's cube faces may need fewer than
+    // the array holds for the sun: every slice pass draws such a view into the first texels of its
+    // layers, and clears one texel beyond them (slices/slice_view.h sliceTexels).
     int resolution = 0;
     // A crop (planning/slice_crop.h): the index of the whole view whose optical depth at this view's
     // first plane seeds it, so its first slab takes no particles; −1 for a whole view.

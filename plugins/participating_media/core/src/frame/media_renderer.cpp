@@ -25,6 +25,13 @@ constexpr float kNegligibleRescatter = 0.01f;  // planScattering
 // its particles subtend tens of degrees, and campfire's lamp faces wanted 12 texels where the sun
 // wanted 48 (docs/design-notes.md).
 constexpr int kMinLampSliceResolution = 16;
+
+// The lamps' views' texels per side (they all take one: planSliceViews), 0 where they are whole.
+int lampSliceTexels(const SharedFrame& shared) {
+    for (const SliceView& v : shared.sliceViews)
+        if (v.view.perspective) return v.resolution;
+    return 0;
+}
 }  // namespace
 
 double MediaFrameStats::value(const std::string& key, double fallback) const {
@@ -139,8 +146,8 @@ void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) 
     if (techniques_.at(settings_.mode).lightSlices) planSliceViews(context, perLight);
     for (const SliceView& v : shared.sliceViews)
         context.sliceViews.push_back(
-            gpu::packLightView(v.view, intervalLayer(v), static_cast<float>(v.slices), static_cast<float>(shared.sliceResolution)));
-    shared.blocks->pack(context.host, context.sliceViews, perLight);
+            gpu::packLightView(v.view, intervalLayer(v), static_cast<float>(v.slices), static_cast<float>(sliceTexels(v, shared.sliceResolution))));
+    shared.blocks->pack(context.host, context.sliceViews, perLight, {.arrayTexels = shared.sliceResolution, .lampTexels = lampSliceTexels(shared)});
     planScattering(context);
     stats_.sliceResolution = shared.sliceResolution;
     stats_.sliceViews = static_cast<int>(shared.sliceViews.size());
@@ -206,6 +213,13 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
         perLight[i] = glm::ivec2(first, static_cast<int>(shared.sliceViews.size()) - first);
     }
     shared.sliceResolution = resolution;
+    // The lookups read one share of the array's side for every lamp's view (light_transmittance.glsl
+    // mediaSliceCount): they all take the largest any asks for.
+    int lampTexels = 0;
+    for (const SliceView& v : shared.sliceViews)
+        if (v.view.perspective) lampTexels = std::max(lampTexels, v.resolution > 0 ? v.resolution : resolution);
+    for (SliceView& v : shared.sliceViews)
+        if (v.view.perspective) v.resolution = lampTexels < resolution ? lampTexels : 0;
 }
 
 // The multiple model's environment grid, packed with the approximation's constants; a single frame

@@ -64,7 +64,6 @@ gpu::ResourceHandle LightSliceDepositPass::add(gpu::FrameGraph& graph, const std
             glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
             const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
             glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, zero);
-            glViewport(0, 0, resolution, resolution);
             buffer.bindParticles();
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSlicePiecesBinding, pieces_.id());
             gpu::applyPipeline(kSliceAdd);
@@ -72,6 +71,8 @@ gpu::ResourceHandle LightSliceDepositPass::add(gpu::FrameGraph& graph, const std
             int firstLayer = 0;
             for (std::size_t v = 0; v < views.size(); ++v) {
                 const GLuint program = views[v].view.perspective ? perspective_.id() : orthographic_.id();
+                const int texels = sliceTexels(views[v], resolution);
+                glViewport(0, 0, texels, texels);
                 glUseProgram(program);
                 setDepositUniforms(program, views[v]);
                 glProgramUniform1i(program, kFirstPieceLocation, firstPiece[v]);

@@ -43,7 +43,7 @@ gpu::ResourceHandle LightSliceIntervalsPass::add(gpu::FrameGraph& graph, const s
                     glProgramUniform1i(pass_.program(), kFirstPlaneLocation, plane);
                     glProgramUniform1i(pass_.program(), kPlanesLocation, v.slices);
                     glProgramUniform1i(pass_.program(), kCropLocation, v.seedView >= 0 ? 1 : 0);
-                    pass_.draw(fbo.id(), glm::ivec2(resolution));
+                    pass_.draw(fbo.id(), glm::ivec2(std::min(sliceTexels(v, resolution) + 1, resolution)));
                     detachSliceLayers(fbo.id(), count);
                 }
         });

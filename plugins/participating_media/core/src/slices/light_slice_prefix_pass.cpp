@@ -73,7 +73,7 @@ gpu::ResourceHandle LightSlicePrefixPass::add(gpu::FrameGraph& graph, const std:
                     setSeedUniforms(program, v, views[static_cast<std::size_t>(v.seedView)], firstSlab[static_cast<std::size_t>(v.seedView)]);
                 else
                     glProgramUniform1i(program, kSeedSlabLocation, -1);
-                pass.draw(fbo.id(), glm::ivec2(resolution));
+                pass.draw(fbo.id(), glm::ivec2(sliceTexels(v, resolution)));
                 unbindSliceLayers(fbo.id(), v);
             }
         });

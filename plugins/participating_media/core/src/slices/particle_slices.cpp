@@ -6,7 +6,6 @@
 #include "slices/light_slice_deposit_pass.h"
 #include "slices/light_slice_pass.h"
 #include "slices/light_slice_prefix_pass.h"
-#include "slices/light_slice_upscale_pass.h"
 #include "slices/volume_slice_pass.h"
 
 namespace nimbus::media {
@@ -36,8 +35,7 @@ void ParticleSlices::add(gpu::FrameGraph& graph, GraphFrame& context, const Part
         context.slices = prefix_->add(graph, views, shared.sliceResolution, slabs);
     } else {
         if (!plain_) plain_ = std::make_unique<LightSlicePass>();
-        if (!upscale_) upscale_ = std::make_unique<LightSliceUpscalePass>();
-        context.slices = upscale_->add(graph, views, shared.sliceResolution, plain_->add(graph, views, shared.sliceResolution, *shared.buffer));
+        context.slices = plain_->add(graph, views, shared.sliceResolution, *shared.buffer);
     }
     if (shared.volumeCount > 0) {
         if (!volumes_) volumes_ = std::make_unique<VolumeSlicePass>();

@@ -17,7 +17,6 @@ namespace nimbus::media {
 class LightSlicePass;
 class LightSliceDepositPass;
 class LightSlicePrefixPass;
-class LightSliceUpscalePass;
 
 class ParticleSlices {
 public:
@@ -32,7 +31,6 @@ private:
     std::unique_ptr<LightSlicePass> plain_;  // each made when first needed
     std::unique_ptr<LightSliceDepositPass> deposit_;
     std::unique_ptr<LightSlicePrefixPass> prefix_;
-    std::unique_ptr<LightSliceUpscalePass> upscale_;
     std::unique_ptr<VolumeSlicePass> volumes_;
 };
 

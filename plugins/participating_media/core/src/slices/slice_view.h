@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 // A light view's slices and how the slice passes bind and describe them to their programs.
 #include "common/shared_frame.h"
 #include "nimbus/gpu/gl_objects.h"
@@ -10,9 +11,16 @@ namespace nimbus::media {
 // `framebuffer` and binds it; detachSliceLayers detaches them again.
 void attachSliceLayers(GLuint framebuffer, GLuint texture, int firstLayer, int count);
 void detachSliceLayers(GLuint framebuffer, int count);
+// A view's texels per side in an array of `arrayResolution`: its own (SliceView::resolution), drawn
+// into the first texels of its layers, or the array's. The lookups read it there
+// (shaders/media/host/light_transmittance.glsl mediaSliceLayerUv).
+inline int sliceTexels(const SliceView& view, int arrayResolution) {
+    return view.resolution > 0 ? std::min(view.resolution, arrayResolution) : arrayResolution;
+}
 // Attaches the ceil(slices/4) layers of `view` in `texture` as draw buffers 0.. of `framebuffer`,
 // clears them to zero unless a pass adds to what an earlier one drew (`clear` false), and binds
-// the framebuffer (every slice pass renders a view this way).
+// the framebuffer (every slice pass renders a view this way). A view of fewer texels than the
+// array leaves the rest of its layers zero: a lookup's bilinear tap weighs the first of them 0.
 void bindSliceLayers(GLuint framebuffer, GLuint texture, const SliceView& view, bool clear = true);
 // Optical depth adds, so slices need no sort: additive blending on every draw buffer.
 inline constexpr gpu::PipelineState kSliceAdd = gpu::PipelineState::blending(gpu::kAdditive);

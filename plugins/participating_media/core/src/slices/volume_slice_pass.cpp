@@ -30,10 +30,11 @@ gpu::ResourceHandle VolumeSlicePass::add(gpu::FrameGraph& graph, gpu::ResourceHa
                 glProgramUniform1f(program, 10, grid.voxel);
             }
             for (const SliceView& v : views) {
+                const int texels = sliceTexels(v, resolution);
                 bindSliceLayers(fbo.id(), resources.id(d.slices), v, false);
-                setSliceViewUniforms(program, v, resolution);
+                setSliceViewUniforms(program, v, texels);
                 // FullscreenPass::draw binds the framebuffer again with the same attachments.
-                pass.draw(fbo.id(), {resolution, resolution}, kSliceAdd);
+                pass.draw(fbo.id(), {texels, texels}, kSliceAdd);
                 unbindSliceLayers(fbo.id(), v);
             }
         });

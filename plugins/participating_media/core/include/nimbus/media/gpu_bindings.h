@@ -22,7 +22,6 @@ inline constexpr std::size_t kMaxHostLights = gpu::kMaxLights;  // MEDIA_MAX_LIG
 // Texture units.
 inline constexpr GLuint kSlabsUnit = 0;           // MEDIA_SLABS_UNIT
 inline constexpr GLuint kPackedSlicesUnit = 0;    // MEDIA_PACKED_SLICES_UNIT (light_slice_intervals.frag)
-inline constexpr GLuint kSmallSlicesUnit = 0;     // MEDIA_SMALL_SLICES_UNIT (light_slice_upscale.frag)
 inline constexpr GLuint kHostDepthUnit = 0;       // MEDIA_HOST_DEPTH_UNIT
 inline constexpr GLuint kDepthUsedUnit = 0;       // MEDIA_DEPTH_USED_UNIT (edge_stencil.frag)
 inline constexpr GLuint kReducedMediaUnit = 0;    // MEDIA_REDUCED_MEDIA_UNIT (seam_marks.frag)
@@ -67,7 +66,7 @@ inline constexpr GLuint kSeamParticlesBinding = 15;      // MEDIA_SEAM_PARTICLES
 
 // The MediaSliceViews uniform block.
 struct alignas(16) GpuSliceViews {
-    glm::ivec4 count;                           // x: slice views this frame
+    glm::ivec4 count;                           // x: slice views this frame; y, z, w: the lamp views' layout (frame_blocks.cpp sliceHeader)
     glm::ivec4 perLight[kMaxHostLights];        // x: first view (−1: none), y: view count
     gpu::GpuLightView views[gpu::kMaxLightViews];
 };
