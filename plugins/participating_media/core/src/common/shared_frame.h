@@ -26,7 +26,7 @@ struct SliceView {
     int firstLayer = 0;
     // Texels per side of this view (0: the slice array's). A lamp's cube faces may need fewer than
     // the array holds for the sun: every slice pass draws such a view into the first texels of its
-    // layers, and clears one texel beyond them (slices/slice_view.h sliceTexels).
+    // layers, and the rest of them stays zero (slices/slice_view.h sliceTexels).
     int resolution = 0;
     // A crop (planning/slice_crop.h): the index of the whole view whose optical depth at this view's
     // first plane seeds it, so its first slab takes no particles; −1 for a whole view.

@@ -1,6 +1,7 @@
 #pragma once
-#include <algorithm>
 // A light view's slices and how the slice passes bind and describe them to their programs.
+#include <algorithm>
+
 #include "common/shared_frame.h"
 #include "nimbus/gpu/gl_objects.h"
 #include "nimbus/gpu/pipeline_state.h"
