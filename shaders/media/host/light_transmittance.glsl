@@ -24,8 +24,8 @@ layout(std140, binding = MEDIA_SLICE_VIEWS_BINDING) uniform MediaSliceViews {
 layout(binding = MEDIA_SLICES_UNIT) uniform sampler2DArray mediaSlices;
 
 // A view's kind for the lookups below: orthographic, perspective (a lamp's), or as its params say.
-// A caller that knows passes a constant, and the other way folds away: on llvmpipe the test and
-// the scaling cost campfire's opaque pass half a millisecond for its sun's lookups.
+// A caller that knows passes a constant, and the other way folds away: llvmpipe runs the test and
+// the scaling on every lookup, the sun's too (docs/design-notes.md).
 const int MEDIA_VIEW_ORTHOGRAPHIC = 0, MEDIA_VIEW_PERSPECTIVE = 1, MEDIA_VIEW_EITHER = -1;
 
 // Where uv, across a view's image, lies in its layers: a lamp's view of fewer texels than the array

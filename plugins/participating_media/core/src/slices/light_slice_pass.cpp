@@ -7,9 +7,6 @@
 
 #include "slices/light_slice_pass.h"
 
-#include <glm/gtc/type_ptr.hpp>
-
-#include "nimbus/media/gpu_bindings.h"
 #include "nimbus/gpu/shader_program.h"
 
 namespace nimbus::media {
