@@ -8,6 +8,31 @@
 
 namespace nimbus::render {
 
+namespace {
+glm::ivec4 intersect(glm::ivec4 a, glm::ivec4 b) {
+    const glm::ivec2 lo = glm::max(glm::ivec2(a), glm::ivec2(b)), hi = glm::min(glm::ivec2(a) + glm::ivec2(a.z, a.w), glm::ivec2(b) + glm::ivec2(b.z, b.w));
+    return hi.x > lo.x && hi.y > lo.y ? glm::ivec4(lo, hi - lo) : glm::ivec4(0);
+}
+}  // namespace
+
+std::vector<std::pair<glm::ivec4, bool>> composeRects(glm::ivec2 size, glm::ivec4 composed, glm::ivec4 edgeRect) {
+    std::vector<std::pair<glm::ivec4, bool>> rects;
+    const auto add = [&](glm::ivec4 r, bool edges) {
+        if (const glm::ivec4 own = intersect(r, composed); own.z > 0) rects.emplace_back(own, edges);
+    };
+    if (edgeRect.z <= 0) {
+        add({0, 0, size.x, size.y}, false);
+        return rects;
+    }
+    const glm::ivec4 e = edgeRect;
+    add({0, 0, size.x, e.y}, false);
+    add({0, e.y + e.w, size.x, size.y - e.y - e.w}, false);
+    add({0, e.y, e.x, e.w}, false);
+    add({e.x + e.z, e.y, size.x - e.x - e.z, e.w}, false);
+    add(e, true);
+    return rects;
+}
+
 ComposePass::ComposePass() : clampedNearest_(gpu::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE)) {}
 
 const gpu::FullscreenPass& ComposePass::pass(int variant) {
@@ -39,7 +64,8 @@ void ComposePass::add(FrameGraph& graph, FrameContext& context) {
             d.output = builder.write(context.sceneColor);
             builder.sideEffect();
         },
-        [this, &context, fog, threshold = overlay.edgeThreshold, rect = overlay.edgeRect](const PassResources& resources, const Data& d) {
+        [this, &context, fog, threshold = overlay.edgeThreshold, rect = overlay.edgeRect, cover = overlay.coverRect](
+            const PassResources& resources, const Data& d) {
             if (!d.layer.valid() && !fog) return;  // the opaque image is the frame
             const auto& desc = resources.desc(d.output);
             const gpu::Framebuffer fbo = gpu::singleTargetFramebuffer(resources.id(d.output), desc.format);
@@ -58,24 +84,15 @@ void ComposePass::add(FrameGraph& graph, FrameContext& context) {
                                                           glm::vec2(desc.width, desc.height)
                                                     : glm::vec2(1.0f);
             const glm::ivec2 size(desc.width, desc.height);
-            if (!d.edges.valid()) {
-                draw(pass(variant), variant, fbo.id(), size, scale, threshold, rect);
-            } else {
-                // The edge variant's extra fetch only over the edge rect; the rest in strips around it.
-                glEnable(GL_SCISSOR_TEST);
-                const glm::ivec4 strips[4] = {{0, 0, size.x, rect.y},
-                                              {0, rect.y + rect.w, size.x, size.y - rect.y - rect.w},
-                                              {0, rect.y, rect.x, rect.w},
-                                              {rect.x + rect.z, rect.y, size.x - rect.x - rect.z, rect.w}};
-                for (const glm::ivec4& strip : strips)
-                    if (strip.z > 0 && strip.w > 0) {
-                        glScissor(strip.x, strip.y, strip.z, strip.w);
-                        draw(pass(variant), variant, fbo.id(), size, scale, threshold, rect);
-                    }
-                glScissor(rect.x, rect.y, rect.z, rect.w);
-                draw(pass(variant | kEdges), variant | kEdges, fbo.id(), size, scale, threshold, rect);
-                glDisable(GL_SCISSOR_TEST);
+            // Without fog the pixels outside the layer's cover are the opaque image already.
+            const glm::ivec4 composed = !fog && cover.z > 0 ? cover : glm::ivec4(0, 0, size);
+            glEnable(GL_SCISSOR_TEST);
+            for (const auto& [strip, edges] : composeRects(size, composed, d.edges.valid() ? rect : glm::ivec4(0))) {
+                glScissor(strip.x, strip.y, strip.z, strip.w);
+                // The edge variant's extra fetch only over the edge rect.
+                draw(pass(variant | (edges ? kEdges : 0)), variant | (edges ? kEdges : 0), fbo.id(), size, scale, threshold, rect);
             }
+            glDisable(GL_SCISSOR_TEST);
             glBindSampler(2, 0);
         });
 }

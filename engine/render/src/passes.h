@@ -50,6 +50,11 @@ private:
     std::map<Variant, gpu::Program> programs_;
 };
 
+// The scissor rects compose draws over a `size` viewport, each with whether it takes the edge
+// variant: `composed` (the layer's cover, or the viewport with fog) cut into the edge rect and the
+// strips around it; no rect outside `composed`.
+std::vector<std::pair<glm::ivec4, bool>> composeRects(glm::ivec2 size, glm::ivec4 composed, glm::ivec4 edgeRect);
+
 // media (and fog) blended over the opaque image in the persistent output (docs/design.md §3 step 4).
 class ComposePass {
 public:

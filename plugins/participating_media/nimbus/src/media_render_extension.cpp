@@ -51,7 +51,7 @@ void MediaRenderExtension::afterOpaque(render::FrameGraph& graph, render::FrameC
     // Compose fogs the opaque image under the layer, so with fog the medium keeps a layer.
     frame_.output = context.input.environment.fog.mode == assets::FogMode::None ? context.sceneColor : gpu::ResourceHandle{};
     renderer_.addMedia(graph, frame_);
-    if (frame_.color.valid()) context.overlay = {frame_.color, frame_.depthUsed, frame_.edges, frame_.edgeRect, frame_.edgeThreshold};
+    if (frame_.color.valid()) context.overlay = {frame_.color, frame_.depthUsed, frame_.edges, frame_.edgeRect, frame_.edgeThreshold, frame_.coverRect};
 }
 
 }  // namespace nimbus::media

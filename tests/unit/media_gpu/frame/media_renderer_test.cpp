@@ -1,11 +1,14 @@
 // frame/media_settings.cpp's defaults, and common/medium_footprint.cpp: splatFootprint and automaticMediaScale,
 // what media_scale=auto is chosen from, particlesNearMeshes, which particles balanced draws with the
 // mesh-crossing variant, particlesNearLamps, which the splats draw with the fragment lamps, and the
-// rects the fast tier draws its edges again within (billboardRect, nearMeshRect, intersectRects),
+// rects the fast tier draws its edges again within (billboardRect, nearMeshRect, lampPeakRect,
+// intersectRects) and composes within (mediumRect),
 // and particlesClearOfMeshes, which splats the depth test alone clips.
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "nimbus/media/media_renderer.h"
 
@@ -47,20 +50,27 @@ TEST(SplatFootprint, AParticleAroundTheEyeCoversTheScreen) {
 }
 
 TEST(AutomaticMediaScale, FullResolutionUnlessFillDominates) {
-    EXPECT_EQ(automaticMediaScale({.coverage = 2.0, .radiusPixels = 100.0}, false), 1.0f);
-    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 100.0}, true), 1.0f) << "a lamp among the particles";
+    EXPECT_EQ(automaticMediaScale({.coverage = 2.0, .radiusPixels = 100.0}, 1.0, false), 1.0f);
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 100.0}, 1.0, true), 1.0f) << "a lamp's light blurred";
+}
+
+// The upsampling costs the pixels it composes, not the image's: billboards covering a tenth of the
+// image three times over pay for it.
+TEST(AutomaticMediaScale, CoverageCountsOverThePixelsComposed) {
+    EXPECT_EQ(automaticMediaScale({.coverage = 0.3, .radiusPixels = 100.0}, 0.2, false), 1.0f) << "1.5 times over its rect";
+    EXPECT_EQ(automaticMediaScale({.coverage = 0.3, .radiusPixels = 100.0}, 0.1, false), 0.25f) << "3 times over its rect";
 }
 
 TEST(AutomaticMediaScale, KeepsEightTexelsAcrossATypicalBillboard) {
-    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 16.0}, false), 0.5f) << "never above ½";
-    EXPECT_FLOAT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 24.0}, false), 1.0f / 3.0f);
-    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 400.0}, false), 0.25f) << "never below ¼";
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 16.0}, 1.0, false), 0.5f) << "never above ½";
+    EXPECT_FLOAT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 24.0}, 1.0, false), 1.0f / 3.0f);
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 400.0}, 1.0, false), 0.25f) << "never below ¼";
 }
 
 TEST(AutomaticMediaScale, BillboardsThatHalfWouldBlurStayAtFullResolution) {
     // Half size 15.9 px keeps 7.95 texels at ½, under the 8 a reduced target must keep.
-    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 15.9}, false), 1.0f);
-    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 2.0}, false), 1.0f) << "a small image of a dense cloud";
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 15.9}, 1.0, false), 1.0f);
+    EXPECT_EQ(automaticMediaScale({.coverage = 10.0, .radiusPixels = 2.0}, 1.0, false), 1.0f) << "a small image of a dense cloud";
 }
 
 TEST(AutomaticImpostorScale, KeepsSixTexelsAcrossATypicalBillboardInEighths) {
@@ -177,6 +187,46 @@ TEST(NearMeshRect, OnlyTheBoxesWithinReachOfAParticle) {
     EXPECT_NEAR(rect.x, 94, 1);
     EXPECT_NEAR(rect.x + rect.z, 112, 1) << "where the box and its near particles meet";
     EXPECT_EQ(nearMeshRect({far}, particles, 2.0, view, 0).z, 0) << "8 radii away";
+}
+
+TEST(MediumRect, TheParticlesSpheresAndTheVolumesBoxes) {
+    const gpu::View view = gpu::makePerspectiveView({}, 2.0 * std::atan(0.5), 0.1, 0.0, 200, 100);
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});
+    EXPECT_EQ(mediumRect(particles, {}, view, 3), billboardRect(particles, {1}, view, 3));
+    // A 1 m box 5 m to the right at depth 10: its near face (depth 9.5) spans pixels 147..158.
+    const Volume box = makeVolume(VolumeShape::Box, glm::translate(glm::dmat4(1.0), glm::dvec3(5.0, 0.0, -10.0)), glm::dvec3(1.0), Medium{});
+    const glm::ivec4 both = mediumRect(particles, {box}, view, 0);
+    EXPECT_NEAR(both.x + both.z, 158, 1) << "the volume's box widens it";
+    EXPECT_NEAR(both.x, billboardRect(particles, {1}, view, 0).x, 0);
+    EXPECT_EQ(mediumRect(ParticleSet{}, {}, view, 3).z, 0) << "nothing drawn";
+}
+
+// A point light within two radii of a particle: the pixels within the margin of its image, where a
+// reduced target's upsampling cannot follow its peak. None for a light far from every particle, a
+// spot (whose cone edge is no point), or a point light behind the eye.
+TEST(LampPeakRect, AroundAPointLightsImageAmongTheParticles) {
+    const gpu::View view = gpu::makePerspectiveView({}, 2.0 * std::atan(0.5), 0.1, 0.0, 200, 100);
+    ParticleSet particles;
+    particles.push({0.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});
+    Light lamp;
+    lamp.kind = gpu::LightKind::Point;
+    lamp.position = {1.0, 0.5, -10.0};  // 1.1 radii from the centre; its image at pixel (110, 55)
+    const glm::ivec4 rect = lampPeakRect(particles, {lamp}, view, 5);
+    EXPECT_NEAR(rect.x, 105, 1);
+    EXPECT_NEAR(rect.y, 50, 1);
+    EXPECT_NEAR(rect.z, 10, 1);
+    EXPECT_NEAR(rect.w, 10, 1);
+    Light far = lamp, spot = lamp, behind = lamp;
+    far.position = {3.0, 0.0, -10.0};
+    spot.kind = gpu::LightKind::Spot;
+    behind.position = {0.0, 0.0, 1.0};
+    ParticleSet aroundEye;
+    aroundEye.push({0.0, 0.0, 0.0}, 2.0f, 1.0f, Medium{});
+    EXPECT_EQ(lampPeakRect(particles, {far}, view, 5).z, 0) << "three radii away";
+    EXPECT_EQ(lampPeakRect(particles, {spot}, view, 5).z, 0);
+    EXPECT_EQ(lampPeakRect(aroundEye, {behind}, view, 5).z, 0) << "behind the eye";
+    EXPECT_EQ(lampPeakRect(particles, {far, lamp}, view, 5), rect);
 }
 
 TEST(IntersectRects, TheSharedPixelsOrNone) {

@@ -63,6 +63,7 @@ struct TranslucentLayer {
     ResourceHandle edges;      // mixed resolution: full-resolution texels of edgeRect, taken where alpha ≥ 0; invalid: none
     glm::ivec4 edgeRect{0};    // x, y (window pixels from the lower left), width, height
     float edgeThreshold = 0.2f;  // relative depth difference the upsampling treats as an edge
+    glm::ivec4 coverRect{0};   // outside it the layer is empty (rgb 0, alpha 1); width 0: the whole viewport
 };
 
 // What an extension adds to the opaque pass's mesh shading (the media plugin: its light slices,

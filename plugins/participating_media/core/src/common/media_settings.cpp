@@ -84,8 +84,9 @@ const SharedField kSharedFields[] = {
       &setChoice<&MediaRenderSettings::sliceDeposit>},
      Acts::SliceDeposit},
     {{{.key = "media_scale",
-       .help = "resolution of the media pass relative to the frame; auto: where the particles cover the image more than 2.5 "
-               "times over, 1/4 to 1/2 keeping 8 texels across a typical billboard (1 where even 1/2 would not)",
+       .help = "resolution of the media pass relative to the frame; auto: where the particles cover their own screen rect more "
+               "than 2.5 times over, 1/4 to 1/2 keeping 8 texels across a typical billboard (1 where even 1/2 would not, or "
+               "with a lamp among them that mixed_resolution does not draw again)",
        .type = SettingType::Number,
        .min = 0.0625,
        .max = 1.0,
@@ -102,7 +103,8 @@ const SharedField kSharedFields[] = {
      Acts::Everywhere},
     {{{.key = "mixed_resolution",
        .help = "with media_scale below 1: draw the medium again at full resolution at the reduced image's edges where a mesh "
-               "enters it (off: upsampled there too, and a thin mesh shows a seam; faster)",
+               "enters it and around a point light among the particles (off: upsampled there too, and a thin mesh shows a seam; "
+               "faster; auto then keeps full resolution with a lamp among the particles)",
        .type = SettingType::Boolean, .defaultValue = "on",
        .actsWhen = "with media_scale below 1 or auto", .showsWith = kShowsWithReducedTarget},
       &setBooleanOff<&MediaRenderSettings::upsampleOnly>, &offscreenMedia},

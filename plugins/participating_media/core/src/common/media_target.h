@@ -1,5 +1,8 @@
 #pragma once
 // Where a mode pass renders the medium this frame.
+#include <algorithm>
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "nimbus/gpu/frame_graph.h"
@@ -17,6 +20,19 @@ struct MediaTarget {
     // into a layer of their own, which spares the layer's clear and compose's full-screen pass.
     // Only at full resolution, and only for a technique whose entry says it draws over.
     gpu::ResourceHandle over;
+    // The viewport's pixels outside which the medium draws nothing (mediumRect, grown by the
+    // upsampling's reach): the host composes the layer only there (MediaLayer::coverRect).
+    glm::ivec4 cover{0};
+    // A reduced target's lamp peaks (lampPeakRect), drawn again at full resolution in modes that
+    // draw edges; width 0: none.
+    glm::ivec4 peak{0};
 };
+
+// How many pixels past a texel's own a reduced target's upsampling reads it (one texel's width and
+// one more, for the gather's rounding); 0 at full resolution.
+inline int upsampleReach(const MediaTarget& target) {
+    const glm::vec2 s = target.fullResScale;
+    return s == glm::vec2(1.0f) ? 0 : static_cast<int>(std::ceil(std::max(s.x, s.y))) + 1;
+}
 
 }  // namespace nimbus::media

@@ -17,13 +17,14 @@ Aabb particleBounds(const ParticleSet& particles) {
     return bounds;
 }
 
-SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& view) {
+SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& view, const std::vector<std::uint8_t>* which) {
     const double pixels = static_cast<double>(view.width) * view.height;
     const glm::dmat4 viewMatrix(view.view);
     // Pixels per metre at depth 1 (perspective) or per metre (orthographic), vertically.
     const double scale = view.height / (2.0 * (view.orthographic ? view.orthoHalfExtent.y : view.tanHalfFovY));
     double covered = 0.0, radiusTimesArea = 0.0;
     for (std::size_t i = 0; i < particles.size(); ++i) {
+        if (which != nullptr && (i >= which->size() || (*which)[i] == 0)) continue;
         const glm::dvec3 c(viewMatrix * glm::dvec4(particles.position[i] - view.origin, 1.0));
         const double r = particles.radius[i], depth = -c.z;
         if (!view.orthographic && depth <= r) {
@@ -58,14 +59,6 @@ glm::ivec4 pixelRect(glm::dvec2 lo, glm::dvec2 hi, const gpu::View& view, int ma
     return {a.x, a.y, b.x - a.x, b.y - a.y};
 }
 
-glm::ivec4 unionRects(glm::ivec4 a, glm::ivec4 b) {
-    if (a.z <= 0) return b;
-    if (b.z <= 0) return a;
-    const glm::ivec2 lo = glm::min(glm::ivec2(a), glm::ivec2(b));
-    const glm::ivec2 hi = glm::max(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
-    return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
-}
-
 // The ndc bounds (lower left, upper right) of spheres as one view sees them.
 class SphereBounds {
 public:
@@ -90,22 +83,6 @@ private:
     glm::dvec2 half_;
 };
 
-// The window pixels of a box's corners; the whole view where a corner lies behind the near plane.
-glm::ivec4 boxRect(const OccluderBox& box, const gpu::View& view, int margin) {
-    const glm::dmat4 viewMatrix(view.view), projection(view.projection);
-    glm::dvec2 lo(1e300), hi(-1e300);
-    for (int corner = 0; corner < 8; ++corner) {
-        glm::dvec3 p = box.centre;
-        for (int a = 0; a < 3; ++a) p += box.axis[a] * (((corner >> a) & 1) != 0 ? box.half[a] : -box.half[a]);
-        const glm::dvec4 v = viewMatrix * glm::dvec4(p - view.origin, 1.0);
-        if (!view.orthographic && -v.z <= view.znear) return pixelRect(glm::dvec2(-1.0), glm::dvec2(1.0), view, margin);
-        const glm::dvec4 clip = projection * v;
-        lo = glm::min(lo, glm::dvec2(clip) / clip.w);
-        hi = glm::max(hi, glm::dvec2(clip) / clip.w);
-    }
-    return pixelRect(lo, hi, view, margin);
-}
-
 // Whether a box's axis-aligned hull comes within `slack` of the particles' `bounds`: only those are
 // tested particle by particle (a level of many meshes around one cloud).
 bool hullNear(const OccluderBox& box, const Aabb& bounds, glm::dvec3 slack) {
@@ -121,6 +98,29 @@ glm::dvec3 reachSlack(const ParticleSet& particles, double reach) {
 }
 
 }  // namespace
+
+glm::ivec4 boxRect(const OccluderBox& box, const gpu::View& view, int margin) {
+    const glm::dmat4 viewMatrix(view.view), projection(view.projection);
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::dvec3 p = box.centre;
+        for (int a = 0; a < 3; ++a) p += box.axis[a] * (((corner >> a) & 1) != 0 ? box.half[a] : -box.half[a]);
+        const glm::dvec4 v = viewMatrix * glm::dvec4(p - view.origin, 1.0);
+        if (!view.orthographic && -v.z <= view.znear) return pixelRect(glm::dvec2(-1.0), glm::dvec2(1.0), view, margin);
+        const glm::dvec4 clip = projection * v;
+        lo = glm::min(lo, glm::dvec2(clip) / clip.w);
+        hi = glm::max(hi, glm::dvec2(clip) / clip.w);
+    }
+    return pixelRect(lo, hi, view, margin);
+}
+
+glm::ivec4 unionRects(glm::ivec4 a, glm::ivec4 b) {
+    if (a.z <= 0) return b;
+    if (b.z <= 0) return a;
+    const glm::ivec2 lo = glm::min(glm::ivec2(a), glm::ivec2(b));
+    const glm::ivec2 hi = glm::max(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
+    return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+}
 
 glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b) {
     const glm::ivec2 lo = glm::max(glm::ivec2(a), glm::ivec2(b));
@@ -178,9 +178,30 @@ glm::ivec4 meshEdgeRect(const std::vector<OccluderBox>& meshes, const ParticleSe
     return nearMeshRect(meshes, particles, kEdgeReach, view, margin);
 }
 
-float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles) {
-    // A lamp among the particles lights a peak a few pixels wide, which a lower resolution blurs away.
-    if (footprint.coverage <= kHalfScaleCoverage || lampAmongParticles) return 1.0f;
+glm::ivec4 mediumRect(const ParticleSet& particles, const std::vector<Volume>& volumes, const gpu::View& view, int margin) {
+    glm::ivec4 rect = billboardRect(particles, std::vector<std::uint8_t>(particles.size(), 1), view, margin);
+    for (const Volume& v : volumes) rect = unionRects(rect, boxRect(occluderBox(v.world, -0.5 * v.size, 0.5 * v.size), view, margin));
+    return rect;
+}
+
+glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin) {
+    const SphereBounds bounds(view);
+    glm::ivec4 rect(0);
+    for (const Light& lamp : lights) {
+        if (lamp.kind != gpu::LightKind::Point) continue;
+        bool near = false;
+        for (std::size_t i = 0; i < particles.size() && !near; ++i)
+            near = glm::length(particles.position[i] - lamp.position) < kLampReach * particles.radius[i];
+        const bool ahead = view.orthographic || glm::dot(lamp.position - view.origin, view.forward) > view.znear;
+        if (!near || !ahead) continue;
+        const auto [lo, hi] = bounds(lamp.position, 0.0);  // its image: a point
+        rect = unionRects(rect, pixelRect(lo, hi, view, margin));
+    }
+    return rect;
+}
+
+float automaticMediaScale(const SplatFootprint& footprint, double composed, bool lampBlurred) {
+    if (footprint.coverage <= kHalfScaleCoverage * std::clamp(composed, 0.0, 1.0) || lampBlurred) return 1.0f;
     // Billboards too small to keep kAutoScaleRadiusTexels at ½ would lose their detail to any
     // reduction (a few texels each, on small images): they stay at full resolution.
     const double keeps = kAutoScaleRadiusTexels / footprint.radiusPixels;
@@ -194,9 +215,11 @@ float automaticImpostorScale(double radiusTexels) {
 }
 
 bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds) {
-    return std::any_of(lights.begin(), lights.end(), [&](const Light& l) {
-        return l.kind != gpu::LightKind::Directional && bounds.contains(l.position);
-    });
+    return lampAmongParticles(lights, bounds, gpu::LightKind::Point) || lampAmongParticles(lights, bounds, gpu::LightKind::Spot);
+}
+
+bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds, gpu::LightKind kind) {
+    return std::any_of(lights.begin(), lights.end(), [&](const Light& l) { return l.kind == kind && bounds.contains(l.position); });
 }
 
 bool lampInsideMedium(const ParticleSet& particles, const std::vector<Light>& lights) {

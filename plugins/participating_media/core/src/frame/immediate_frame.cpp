@@ -91,6 +91,7 @@ MediaLayer MediaRenderer::renderMedia(const HostFrame& host, gpu::PassTimer* tim
         layer.edges = im.edges != nullptr ? im.edges->id() : 0;
         layer.edgeRect = im.edges != nullptr ? im.frame.edgeRect : glm::ivec4(0);
         layer.edgeThreshold = im.frame.edgeThreshold;
+        layer.coverRect = im.frame.coverRect;
     }
     return layer;
 }

@@ -108,20 +108,48 @@ void MediaRenderer::addUploadPass(gpu::FrameGraph& graph, GraphFrame& context) {
         });
 }
 
+// media_scale=auto's footprint: a point light's own particles (within kLampReach of it), lit
+// unevenly within each, keep kLampLitRadiusTexels across their typical half size, where it asks
+// more than the billboards' kAutoScaleRadiusTexels across all of them.
+SplatFootprint MediaRenderer::lampLitFootprint(SplatFootprint all, const std::vector<Light>& lights, const gpu::View& v) const {
+    std::vector<int> points;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (lights[i].kind == gpu::LightKind::Point) points.push_back(static_cast<int>(i));
+    if (points.empty()) return all;
+    const std::vector<std::uint8_t> near = particlesNearLamps(*particles_, lights, points, kLampReach);
+    const SplatFootprint lit = splatFootprint(*particles_, v, &near);
+    if (lit.coverage > 0.0) all.radiusPixels = std::min(all.radiusPixels, lit.radiusPixels * kAutoScaleRadiusTexels / kLampLitRadiusTexels);
+    return all;
+}
+
 // The media target: its resolution (media_scale, or automatic from the billboards' footprint).
 void MediaRenderer::planTarget(const GraphFrame& context) {
     const gpu::View& v = context.host.camera;
     float scale = std::min(settings_.mediaScale, 1.0f);
     const SplatFootprint footprint = splatFootprint(*particles_, v);
     shared_->coverage = footprint.coverage;
-    if (settings_.mediaScaleAuto) scale = automaticMediaScale(footprint, lampAmongParticles(context.host.lights, shared_->bounds));
+    const glm::ivec4 medium = mediumRect(*particles_, *volumes_, v, 0);
+    // A point light's peak is drawn again at full resolution where the mode draws edges.
+    const TechniqueEntry& entry = techniques_.at(settings_.mode);
+    const bool peaksRedrawn = entry.edges && entry.lampPeaks && !settings_.upsampleOnly;
+    const std::vector<Light>& lights = context.host.lights;
+    if (settings_.mediaScaleAuto) {
+        const double composed = static_cast<double>(medium.z) * medium.w / (static_cast<double>(v.width) * v.height);
+        const bool lampBlurred = lampAmongParticles(lights, shared_->bounds, gpu::LightKind::Spot) ||
+                                 (!peaksRedrawn && lampAmongParticles(lights, shared_->bounds, gpu::LightKind::Point));
+        scale = automaticMediaScale(lampLitFootprint(footprint, lights, v), composed, lampBlurred);
+    }
     stats_.mediaScale = scale;
     shared_->radiusTexels = footprint.radiusPixels * scale;
     MediaTarget& target = shared_->target;
     target = MediaTarget{};
     target.size = glm::max(glm::ivec2(glm::round(glm::vec2(v.width, v.height) * scale)), glm::ivec2(1));
     target.fullResScale = glm::vec2(v.width, v.height) / glm::vec2(target.size);
-    if (target.size != glm::ivec2(v.width, v.height)) target.name = "media_color_low";
+    const bool reduced = target.size != glm::ivec2(v.width, v.height);
+    if (reduced) target.name = "media_color_low";
+    const int reach = upsampleReach(target);
+    target.cover = medium.z > 0 ? mediumRect(*particles_, *volumes_, v, reach) : medium;
+    if (reduced && peaksRedrawn) target.peak = lampPeakRect(*particles_, lights, v, reach);
 }
 
 void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) {
@@ -270,7 +298,7 @@ double MediaRenderer::measureSplatFloor(const gpu::View& view, int repeats) {
 
 void MediaRenderer::addMedia(gpu::FrameGraph& graph, GraphFrame& context) {
     context.color = context.depthUsed = context.edges = {};
-    context.edgeRect = glm::ivec4(0);
+    context.edgeRect = context.coverRect = glm::ivec4(0);
     if (particles_ == nullptr || !hasMedium(*particles_, volumes_) || context.blocks == nullptr) return;
     const gpu::View& v = context.host.camera;
     MediaTarget& target = shared_->target;
@@ -278,20 +306,23 @@ void MediaRenderer::addMedia(gpu::FrameGraph& graph, GraphFrame& context) {
     target.over = full && drawsOver_ ? context.output : gpu::ResourceHandle{};
     context.color = technique_->addMedia(graph, context, frame_);
     if (target.over.valid() && context.color == target.over) context.color = {};  // drawn over the output: no layer
+    context.coverRect = target.cover;
     context.edgeThreshold = 0.2f;
     if (target.size != glm::ivec2(v.width, v.height)) {
         if (!depthUsedPass_) depthUsedPass_ = std::make_unique<MediaDepthUsedPass>();
         context.depthUsed = depthUsedPass_->add(graph, context, target);
         context.edgeThreshold = settings_.upsampleThreshold;
-        if (const glm::ivec4 rect = technique_->edgeRect(); rect.z > 0) {
+        const glm::ivec4 meshes = technique_->edgeRect(), rect = unionRects(meshes, target.peak);
+        frame_.report("lamp_peak_pixels", static_cast<long long>(target.peak.z) * target.peak.w);
+        if (rect.z > 0) {
             // Where a mesh lies inside the medium, its texels become edges too (media_seam_marks_pass.h).
-            if (!settings_.noMeshCuts) {
+            if (meshes.z > 0 && !settings_.noMeshCuts) {
                 if (!seamMarksPass_) seamMarksPass_ = std::make_unique<MediaSeamMarksPass>();
                 context.depthUsed = seamMarksPass_->add(graph, context, *shared_->buffer,
                                                         particlesCutByMeshes(context.host.occluders, *particles_), context.depthUsed, target);
             }
             if (!edgeStencilPass_) edgeStencilPass_ = std::make_unique<MediaEdgeStencilPass>();
-            const EdgeTarget edges = edgeStencilPass_->add(graph, context, context.depthUsed, target, context.edgeThreshold, rect);
+            const EdgeTarget edges = edgeStencilPass_->add(graph, context, context.depthUsed, target, context.edgeThreshold, rect, target.peak);
             context.edges = technique_->addEdges(graph, context, frame_, edges);
             context.edgeRect = rect;
         }

@@ -58,6 +58,10 @@ public:
         const int steps = own.raymarchSteps > 0 ? own.raymarchSteps : kDefaultRaymarchSteps;
         edgeRect_ = frame.settings->upsampleOnly ? glm::ivec4(0)
                                                  : meshEdgeRect(context.host.occluders, *frame.particles, context.host.camera, frame.shared->target.size);
+        // The grid's padding voxel reaches past the particles' spheres: the layer covers its box.
+        MediaTarget& target = frame.shared->target;
+        const OccluderBox box = occluderBox(glm::dmat4(1.0), grid_.min, grid_.min + grid_.voxel * glm::dvec3(grid_.size));
+        if (!grid_.empty()) target.cover = unionRects(target.cover, boxRect(box, context.host.camera, upsampleReach(target)));
         march_ = pass_->march(context, grid_, textures_, steps);
         return pass_->add(graph, context, march_, frame.shared->target);
     }
@@ -86,6 +90,7 @@ TechniqueEntry raymarchTechnique() {
             .sliceDeposit = true,
             .volumes = true,
             .edges = true,
+            .lampPeaks = true,  // campfire fast at ¼: 15.2% (14.7% at full resolution, its voxels')
             .settings = specsOf(kRaymarchFields),
             .read = readerOf(kRaymarchFields),
             .create = [] { return std::make_unique<RaymarchTechnique>(); },

@@ -13,6 +13,7 @@ namespace {
 constexpr GLint kScaleLocation = 1;      // edge_stencil.frag uScale
 constexpr GLint kThresholdLocation = 2;  // edge_stencil.frag uThreshold
 constexpr GLint kOffsetLocation = 3;     // edge_stencil.frag uOffset
+constexpr GLint kWholeLocation = 4;      // edge_stencil.frag uWhole
 // Every fragment the shader keeps (an edge) writes stencil 1 and its colour.
 constexpr gpu::PipelineState kWriteStencil{
     .stencil = {.test = true, .compare = GL_ALWAYS, .reference = 1, .readMask = 0xFF, .writeMask = 0xFF, .pass = GL_REPLACE}};
@@ -42,7 +43,7 @@ MediaEdgeStencilPass::MediaEdgeStencilPass()
     : pass_("media/upsample/edge_stencil.frag"), clampedNearest_(gpu::createSampler(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE)) {}
 
 EdgeTarget MediaEdgeStencilPass::add(gpu::FrameGraph& graph, GraphFrame& context, gpu::ResourceHandle depthUsed, const MediaTarget& target,
-                                     float threshold, glm::ivec4 rect) {
+                                     float threshold, glm::ivec4 rect, glm::ivec4 whole) {
     struct Data {
         gpu::ResourceHandle color, stencil, depthUsed, scene;
     };
@@ -58,7 +59,7 @@ EdgeTarget MediaEdgeStencilPass::add(gpu::FrameGraph& graph, GraphFrame& context
             d.depthUsed = builder.read(depthUsed);
             d.scene = builder.read(context.sceneDepth);
         },
-        [this, &context, size, scale, threshold, rect](const gpu::PassResources& r, const Data& d) {
+        [this, &context, size, scale, threshold, rect, whole](const gpu::PassResources& r, const Data& d) {
             const gpu::Framebuffer fbo = edgeFramebuffer(r.id(d.color), r.id(d.stencil));
             gpu::applyPipeline(kWriteStencil);  // the clears write through its masks too
             const float notDrawn[4] = {0.0f, 0.0f, 0.0f, -1.0f};
@@ -68,6 +69,8 @@ EdgeTarget MediaEdgeStencilPass::add(gpu::FrameGraph& graph, GraphFrame& context
             glProgramUniform2f(pass_.program(), kScaleLocation, scale.x, scale.y);
             glProgramUniform1f(pass_.program(), kThresholdLocation, threshold);
             glProgramUniform2f(pass_.program(), kOffsetLocation, static_cast<float>(rect.x), static_cast<float>(rect.y));
+            glProgramUniform4f(pass_.program(), kWholeLocation, static_cast<float>(whole.x), static_cast<float>(whole.y),
+                               static_cast<float>(whole.x + whole.z), static_cast<float>(whole.y + whole.w));
             glBindTextureUnit(kSceneDepthUnit, r.id(d.scene));
             glBindTextureUnit(kDepthUsedUnit, r.id(d.depthUsed));
             glBindSampler(kDepthUsedUnit, clampedNearest_.id());

@@ -26,9 +26,10 @@ class MediaEdgeStencilPass {
 public:
     MediaEdgeStencilPass();
     // After MediaDepthUsedPass: `depthUsed` is its texture for the reduced `target`.
-    // `rect`: the pixels (x, y, width, height) it marks, as the technique's edgeRect.
+    // `rect`: the pixels (x, y, width, height) within which it marks the edges; `whole`: pixels in
+    // it it marks whatever the depths (MediaTarget::peak), width 0: none.
     EdgeTarget add(gpu::FrameGraph& graph, GraphFrame& context, gpu::ResourceHandle depthUsed, const MediaTarget& target, float threshold,
-                   glm::ivec4 rect);
+                   glm::ivec4 rect, glm::ivec4 whole);
 
 private:
     gpu::FullscreenPass pass_;

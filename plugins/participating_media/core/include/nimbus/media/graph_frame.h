@@ -29,6 +29,7 @@ struct GraphFrame {
     gpu::ResourceHandle depthUsed;       // addMedia: MediaLayer::depthUsed (invalid at full resolution)
     gpu::ResourceHandle edges;           // addMedia: MediaLayer::edges (invalid: none)
     glm::ivec4 edgeRect{0};              // addMedia: MediaLayer::edgeRect
+    glm::ivec4 coverRect{0};             // addMedia: MediaLayer::coverRect
     float edgeThreshold = 0.2f;          // addMedia: MediaLayer::edgeThreshold
     std::vector<gpu::GpuLightView> sliceViews;  // addLightSlices: every light's slice views
     bool multiple = false;                      // addLightSlices: the frame draws the multiple-scattering model

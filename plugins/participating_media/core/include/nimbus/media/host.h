@@ -13,7 +13,8 @@
 //   3. renderMedia(frame)  — after it, with frame.sceneDepth: the medium, into MediaLayer.
 //   4. The host composes: pixel = layer.rgb + layer.a · opaque (premultiplied radiance, view
 //      transmittance), upsampling with "common/upsample.glsl" when MediaLayer::depthUsed is set, and
-//      taking MediaLayer::edges' texel instead within edgeRect where its alpha is ≥ 0.
+//      taking MediaLayer::edges' texel instead within edgeRect where its alpha is ≥ 0. Outside
+//      MediaLayer::coverRect the layer is empty, so it may compose only within it.
 //
 // Conventions: positions sent to the GPU are relative to HostFrame::camera.origin (double on the
 // CPU). HostFrame::camera is the host's camera as the plugin draws with it: a gpu::View built from
@@ -127,6 +128,10 @@ struct MediaLayer {
     // (the reduced layer's edges near a mesh), to take instead of upsampling.
     GLuint edges = 0;
     glm::ivec4 edgeRect{0};  // x, y (window pixels from the lower left), width, height
+    // The viewport's pixels outside which the layer, upsampled, is empty (rgb 0, alpha 1: the pixel
+    // is the opaque image), as edgeRect gives them; width 0: the whole viewport. A host may
+    // compose only within it where nothing else (fog) changes the pixels outside.
+    glm::ivec4 coverRect{0};
     glm::ivec2 size{0};
     float edgeThreshold = 0.2f;  // relative depth difference the depth-aware upsampling treats as an edge
 };

@@ -93,6 +93,7 @@ public:
 
 private:
     void planTarget(const GraphFrame& frame);
+    SplatFootprint lampLitFootprint(SplatFootprint all, const std::vector<Light>& lights, const gpu::View& v) const;
     void addUploadPass(gpu::FrameGraph& graph, GraphFrame& frame);
     void planSliceViews(const GraphFrame& frame, std::vector<glm::ivec2>& perLight);
     void planScattering(GraphFrame& frame);  // the multiple-scattering model's environment grid

@@ -23,7 +23,8 @@ struct SplatFootprint {
     double coverage = 0.0;
     double radiusPixels = 0.0;
 };
-SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& view);
+// `which` (one per particle, nonzero: in): only those particles; null: all.
+SplatFootprint splatFootprint(const ParticleSet& particles, const gpu::View& view, const std::vector<std::uint8_t>* which = nullptr);
 
 // The window pixels (x, y from the lower left, width, height) that bound the spheres of the
 // particles flagged in `which` (one per particle, nonzero: in), grown by `margin` pixels and
@@ -48,17 +49,52 @@ glm::ivec4 meshEdgeRect(const std::vector<OccluderBox>& meshes, const ParticleSe
 // (docs/design-notes.md).
 inline constexpr double kEdgeReach = 1.0;
 
+// The window pixels of a box's corners, grown by `margin` and clipped to the view; the whole view
+// where a corner lies behind the near plane.
+glm::ivec4 boxRect(const OccluderBox& box, const gpu::View& view, int margin);
+
 // The pixels two rects (x, y, width, height) share; width 0 where none.
 glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b);
+// The smallest rect holding both (one of width 0 holds nothing).
+glm::ivec4 unionRects(glm::ivec4 a, glm::ivec4 b);
 
-// media_scale=auto: 1 unless the billboards cover the image more than kHalfScaleCoverage times
-// over (fill dominates) and no lamp lies among them; then as low as keeps kAutoScaleRadiusTexels
-// across a typical billboard's half size, within [¼, ½]. The kernel is smooth over a billboard,
-// so the depth-aware upsampling loses next to nothing there (docs/design-notes.md). Billboards
-// that ½ would leave with fewer texels stay at full resolution: a reduced target blurs them away.
-float automaticMediaScale(const SplatFootprint& footprint, bool lampAmongParticles);
+// The pixels outside which the medium draws nothing: the particles' spheres (billboardRect) and
+// each volume's box, grown by `margin` and clipped to the view; width 0 where none is on screen.
+// A reduced target is upsampled and composed only there (MediaLayer::coverRect).
+glm::ivec4 mediumRect(const ParticleSet& particles, const std::vector<Volume>& volumes, const gpu::View& view, int margin);
+
+// Within this many radii of a point or spot light (or across a spot's cone edge) a particle's
+// splats take its light per fragment, with the near field's quadrature where a ray passes within
+// two deviations (2R/3) of it (particles_technique.cpp, splat_source.glsl). Beyond about 1.7 radii
+// no ray through a particle passes that close; campfire errs as before at 2, 22% more at 1.5
+// (docs/design-notes.md).
+inline constexpr double kLampReach = 2.0;
+
+// Around each point light among the particles (within kLampReach radii of one), the pixels within
+// `margin` of its image (a reduced target's upsampling reach: the pixels that read the texels
+// around it). Its scattered light peaks there as 1/distance, which bilinear upsampling cannot
+// follow: campfire at ¼ erred 21% against 4.4% at full resolution, nearly all of it there, so mixed
+// resolution draws these pixels again at full resolution (4.7%; docs/design-notes.md). Width 0
+// where no point light near a particle lies in front of the eye.
+glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin);
+
+// media_scale=auto: 1 unless the billboards cover the pixels the layer is composed over (`composed`,
+// mediumRect's share of the image, where the upsampling pays) more than kHalfScaleCoverage times
+// over, so fill dominates, and no lamp's light would be blurred (`lampBlurred`: a spot light among
+// the particles, or a point light whose peak is not drawn again at full resolution); then as low
+// as keeps kAutoScaleRadiusTexels across a typical billboard's half size, within [¼, ½]. The kernel
+// is smooth over a billboard, so the depth-aware upsampling loses next to nothing there
+// (docs/design-notes.md). Billboards that ½ would leave with fewer texels stay at full resolution:
+// a reduced target blurs them away.
+float automaticMediaScale(const SplatFootprint& footprint, double composed, bool lampBlurred);
 inline constexpr double kHalfScaleCoverage = 2.5;
 inline constexpr double kAutoScaleRadiusTexels = 8.0;
+// What a point light's own particles keep (MediaRenderer::lampLitFootprint): its light varies within
+// each of them. Campfire's fire particles are far smaller than its smoke's. With the smoke's 8 texels
+// it erred 10% at 320×180 (4.2% at full resolution), 5.6% at 640×360 (4.4%), 4.7% at 1280×720 (4.4%),
+// within the fire around the lamp; with 16, 320×180 and 640×360 stay at full resolution and
+// 1280×720 takes 0.37 and errs 4.5%.
+inline constexpr double kLampLitRadiusTexels = 16.0;
 // impostor_scale=auto (blocks): as few impostor texels per media texel as keep
 // kAutoImpostorRadiusTexels across a typical billboard's half size (the kernel's s = R/3 then
 // spans two), within [¼, ½], rounded up to eighths so that a camera moving a little keeps the
@@ -70,8 +106,9 @@ inline constexpr double kAutoImpostorRadiusTexels = 6.0;
 // a fit across them has nothing to follow (docs/design-notes.md).
 inline constexpr double kConstantSplatPixels = 2.0;
 
-// Whether a point or spot light lies inside `bounds` (the particles').
+// Whether a point or spot light (`kind`: only that kind) lies inside `bounds` (the particles').
 bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds);
+bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds, gpu::LightKind kind);
 
 // Whether a point or spot light lies inside a particle that takes more than a tenth of a ray
 // through its centre (a column over kLampMediumColumn): the particles mode's exact_near_lamps.

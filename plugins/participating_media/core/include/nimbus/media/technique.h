@@ -94,6 +94,9 @@ struct TechniqueEntry {
     bool multipleScattering = true;  // draws the multiple-scattering model (the scattering keys act in it)
     bool volumes = false;            // draws volumes (volume.h); the other modes refuse a scene with one
     bool edges = false;              // may draw a reduced image's edges again (addEdges): mixed_resolution acts in it
+    // With edges: a reduced target, with a point light's peak drawn again (MediaTarget::peak), errs
+    // about as the full-resolution one, so media_scale=auto may reduce it with a lamp among the particles.
+    bool lampPeaks = false;
     bool drawsOver = false;          // its full-resolution passes honour MediaTarget::over (blend over the host's output)
     std::vector<SettingSpec> settings;  // its own keys (the table sets their `modes` to this name)
     // Its own tier defaults for shared keys, over the tier's and under any key that was set (the
