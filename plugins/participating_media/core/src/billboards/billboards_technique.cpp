@@ -29,6 +29,7 @@ TechniqueEntry billboardsTechnique() {
             .lightSlices = false,
             .multipleScattering = false,
             .drawsOver = true,
+            .withinMedium = true,
             .read = [](const Settings&, QualityTier) -> std::any { return {}; },
             .create = [] { return std::make_unique<BillboardsTechnique>(); },
             .benchRows = [](const ParticleSet&, const std::vector<glm::dvec3>&) {

@@ -352,6 +352,7 @@ TechniqueEntry blocksTechnique() {
             .edges = true,
             // Not lampPeaks: campfire fast at ¼ erred 6.2% against 3.1% at full resolution, over the
             // lamp-lit impostors, not only at the peak.
+            .withinMedium = true,
             .settings = specsOf(kBlocksFields),
             // Where a mesh reaches into the medium, fast keeps balanced's slice detail and twice fast's
             // slices: the light the mesh cuts there is most of the seam band's error, and blocks

@@ -128,13 +128,14 @@ void MediaRenderer::planTarget(const GraphFrame& context) {
     float scale = std::min(settings_.mediaScale, 1.0f);
     const SplatFootprint footprint = splatFootprint(*particles_, v);
     shared_->coverage = footprint.coverage;
-    const glm::ivec4 medium = mediumRect(*particles_, *volumes_, v, 0);
-    // A point light's peak is drawn again at full resolution where the mode draws edges.
     const TechniqueEntry& entry = techniques_.at(settings_.mode);
+    // Where the layer may hold anything: the whole viewport (0) unless the mode draws within the medium.
+    const glm::ivec4 medium = entry.withinMedium ? mediumRect(*particles_, *volumes_, v, 0) : glm::ivec4(0);
+    // A point light's peak is drawn again at full resolution where the mode draws edges.
     const bool peaksRedrawn = entry.edges && entry.lampPeaks && !settings_.upsampleOnly;
     const std::vector<Light>& lights = context.host.lights;
     if (settings_.mediaScaleAuto) {
-        const double composed = static_cast<double>(medium.z) * medium.w / (static_cast<double>(v.width) * v.height);
+        const double composed = medium.z > 0 ? static_cast<double>(medium.z) * medium.w / (static_cast<double>(v.width) * v.height) : 1.0;
         const bool lampBlurred = lampAmongParticles(lights, shared_->bounds, gpu::LightKind::Spot) ||
                                  (!peaksRedrawn && lampAmongParticles(lights, shared_->bounds, gpu::LightKind::Point));
         scale = automaticMediaScale(lampLitFootprint(footprint, lights, v), composed, lampBlurred);

@@ -192,6 +192,7 @@ TechniqueEntry particlesTechnique() {
             .edges = true,
             .lampPeaks = true,  // campfire fast at ¼: 4.7% (4.4% at full resolution)
             .drawsOver = true,
+            .withinMedium = true,
             .settings = specsOf(kParticlesFields),
             .read = readerOf(kParticlesFields),
             .idle =

@@ -130,6 +130,7 @@ TechniqueEntry sheetsTechnique() {
             .help = "image-aligned sheet-buffer splatting: pre-integrated kernel slabs summed per sheet, sheets composited back "
                     "to front, so no order flips as the view turns",
             .sliceDeposit = true,
+            .withinMedium = true,
             .settings = specsOf(kSheetsFields),
             .read = readerOf(kSheetsFields),
             .create = [] { return std::make_unique<SheetsTechnique>(); },

@@ -98,6 +98,10 @@ struct TechniqueEntry {
     // about as the full-resolution one, so media_scale=auto may reduce it with a lamp among the particles.
     bool lampPeaks = false;
     bool drawsOver = false;          // its full-resolution passes honour MediaTarget::over (blend over the host's output)
+    // What addMedia draws lies within the particles' spheres and the volumes' boxes on screen
+    // (SharedFrame::target.cover, which the technique widens where it reaches further): the host
+    // composes only there. Off (a mode of your own, by default): the layer may fill the viewport.
+    bool withinMedium = false;
     std::vector<SettingSpec> settings;  // its own keys (the table sets their `modes` to this name)
     // Its own tier defaults for shared keys, over the tier's and under any key that was set (the
     // shared keys' help says them). Null: the tier's.
