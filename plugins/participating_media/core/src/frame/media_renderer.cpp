@@ -122,10 +122,20 @@ SplatFootprint MediaRenderer::lampLitFootprint(SplatFootprint all, const std::ve
     return all;
 }
 
-// The media target: its resolution (media_scale, or automatic from the billboards' footprint).
+// media_scale=auto this frame: `medium` is the layer's rect (0: the viewport), over which compose pays.
+float MediaRenderer::automaticScale(const GraphFrame& context, const SplatFootprint& footprint, glm::ivec4 medium, bool peaksRedrawn) const {
+    const gpu::View& v = context.host.camera;
+    const std::vector<Light>& lights = context.host.lights;
+    const double composed = medium.z > 0 ? static_cast<double>(medium.z) * medium.w / (static_cast<double>(v.width) * v.height) : 1.0;
+    const bool lampBlurred = lampAmongParticles(lights, shared_->bounds, gpu::LightKind::Spot) ||
+                             (!peaksRedrawn && lampAmongParticles(lights, shared_->bounds, gpu::LightKind::Point));
+    return automaticMediaScale(lampLitFootprint(footprint, lights, v), composed, lampBlurred);
+}
+
+// The media target: its resolution (media_scale, or automatic from the billboards' footprint), the
+// rect the layer covers and the lamps' peaks to draw again at full resolution.
 void MediaRenderer::planTarget(const GraphFrame& context) {
     const gpu::View& v = context.host.camera;
-    float scale = std::min(settings_.mediaScale, 1.0f);
     const SplatFootprint footprint = splatFootprint(*particles_, v);
     shared_->coverage = footprint.coverage;
     const TechniqueEntry& entry = techniques_.at(settings_.mode);
@@ -133,13 +143,7 @@ void MediaRenderer::planTarget(const GraphFrame& context) {
     const glm::ivec4 medium = entry.withinMedium ? mediumRect(*particles_, *volumes_, v, 0) : glm::ivec4(0);
     // A point light's peak is drawn again at full resolution where the mode draws edges.
     const bool peaksRedrawn = entry.edges && entry.lampPeaks && !settings_.upsampleOnly;
-    const std::vector<Light>& lights = context.host.lights;
-    if (settings_.mediaScaleAuto) {
-        const double composed = medium.z > 0 ? static_cast<double>(medium.z) * medium.w / (static_cast<double>(v.width) * v.height) : 1.0;
-        const bool lampBlurred = lampAmongParticles(lights, shared_->bounds, gpu::LightKind::Spot) ||
-                                 (!peaksRedrawn && lampAmongParticles(lights, shared_->bounds, gpu::LightKind::Point));
-        scale = automaticMediaScale(lampLitFootprint(footprint, lights, v), composed, lampBlurred);
-    }
+    const float scale = settings_.mediaScaleAuto ? automaticScale(context, footprint, medium, peaksRedrawn) : std::min(settings_.mediaScale, 1.0f);
     stats_.mediaScale = scale;
     shared_->radiusTexels = footprint.radiusPixels * scale;
     MediaTarget& target = shared_->target;
@@ -150,7 +154,7 @@ void MediaRenderer::planTarget(const GraphFrame& context) {
     if (reduced) target.name = "media_color_low";
     const int reach = upsampleReach(target);
     target.cover = medium.z > 0 ? mediumRect(*particles_, *volumes_, v, reach) : medium;
-    if (reduced && peaksRedrawn) target.peak = lampPeakRect(*particles_, lights, v, reach);
+    if (reduced && peaksRedrawn) target.peak = lampPeakRect(*particles_, context.host.lights, v, reach);
 }
 
 void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) {

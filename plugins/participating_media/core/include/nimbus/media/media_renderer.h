@@ -93,6 +93,7 @@ public:
 
 private:
     void planTarget(const GraphFrame& frame);
+    float automaticScale(const GraphFrame& context, const SplatFootprint& footprint, glm::ivec4 medium, bool peaksRedrawn) const;
     SplatFootprint lampLitFootprint(SplatFootprint all, const std::vector<Light>& lights, const gpu::View& v) const;
     void addUploadPass(gpu::FrameGraph& graph, GraphFrame& frame);
     void planSliceViews(const GraphFrame& frame, std::vector<glm::ivec2>& perLight);
