@@ -229,6 +229,27 @@ TEST(LampPeakRect, AroundAPointLightsImageAmongTheParticles) {
     EXPECT_EQ(lampPeakRect(particles, {far, lamp}, view, 5), rect);
 }
 
+// The peaks are drawn again through one rect: lamps far apart on screen would redraw everything
+// between them, so such a frame is not reduced for them.
+TEST(LampPeakRect, LampsFarApartOnScreenAreNotCompact) {
+    const gpu::View view = gpu::makePerspectiveView({}, 2.0 * std::atan(0.5), 0.1, 0.0, 200, 100);
+    ParticleSet particles;
+    particles.push({-6.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});
+    particles.push({6.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});
+    particles.push({-5.0, 0.0, -10.0}, 1.0f, 1.0f, Medium{});
+    Light left, right, beside;
+    left.kind = right.kind = beside.kind = gpu::LightKind::Point;
+    left.position = {-6.0, 0.0, -10.0};   // pixel 40
+    right.position = {6.0, 0.0, -10.0};   // pixel 160
+    beside.position = {-5.5, 0.0, -10.0};  // pixel 45
+    EXPECT_TRUE(lampPeaksCompact(particles, {left}, view));
+    EXPECT_TRUE(lampPeaksCompact(particles, {left, beside}, view)) << "two squares that overlap";
+    EXPECT_FALSE(lampPeaksCompact(particles, {left, right}, view)) << "120 pixels apart";
+    EXPECT_TRUE(lampPeaksCompact(particles, {}, view));
+    const LampPeaks both = lampPeaks(particles, {left, right}, view, 5);
+    EXPECT_EQ(both.pixels, 2LL * 10 * 10);
+}
+
 TEST(IntersectRects, TheSharedPixelsOrNone) {
     EXPECT_EQ(intersectRects({0, 0, 10, 10}, {5, 2, 10, 4}), glm::ivec4(5, 2, 5, 4));
     EXPECT_EQ(intersectRects({0, 0, 10, 10}, {10, 0, 5, 5}).z, 0);

@@ -184,9 +184,9 @@ glm::ivec4 mediumRect(const ParticleSet& particles, const std::vector<Volume>& v
     return rect;
 }
 
-glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin) {
+LampPeaks lampPeaks(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin) {
     const SphereBounds bounds(view);
-    glm::ivec4 rect(0);
+    LampPeaks peaks;
     for (const Light& lamp : lights) {
         if (lamp.kind != gpu::LightKind::Point) continue;
         bool near = false;
@@ -195,9 +195,21 @@ glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& 
         const bool ahead = view.orthographic || glm::dot(lamp.position - view.origin, view.forward) > view.znear;
         if (!near || !ahead) continue;
         const auto [lo, hi] = bounds(lamp.position, 0.0);  // its image: a point
-        rect = unionRects(rect, pixelRect(lo, hi, view, margin));
+        const glm::ivec4 own = pixelRect(lo, hi, view, margin);
+        peaks.rect = unionRects(peaks.rect, own);
+        peaks.pixels += static_cast<long long>(own.z) * own.w;
     }
-    return rect;
+    return peaks;
+}
+
+glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin) {
+    return lampPeaks(particles, lights, view, margin).rect;
+}
+
+bool lampPeaksCompact(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view) {
+    constexpr int kQuarterReach = 5;  // upsampleReach at ¼: a texel of 4 pixels and one more
+    const LampPeaks peaks = lampPeaks(particles, lights, view, kQuarterReach);
+    return static_cast<double>(peaks.rect.z) * peaks.rect.w <= kPeakRectSlack * static_cast<double>(peaks.pixels);
 }
 
 float automaticMediaScale(const SplatFootprint& footprint, double composed, bool lampBlurred) {

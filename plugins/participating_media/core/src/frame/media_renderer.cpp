@@ -142,7 +142,7 @@ void MediaRenderer::planTarget(const GraphFrame& context) {
     // Where the layer may hold anything: the whole viewport (0) unless the mode draws within the medium.
     const glm::ivec4 medium = entry.withinMedium ? mediumRect(*particles_, *volumes_, v, 0) : glm::ivec4(0);
     // A point light's peak is drawn again at full resolution where the mode draws edges.
-    const bool peaksRedrawn = entry.edges && entry.lampPeaks && !settings_.upsampleOnly;
+    const bool peaksRedrawn = entry.edges && entry.lampPeaks && !settings_.upsampleOnly && lampPeaksCompact(*particles_, context.host.lights, v);
     const float scale = settings_.mediaScaleAuto ? automaticScale(context, footprint, medium, peaksRedrawn) : std::min(settings_.mediaScale, 1.0f);
     stats_.mediaScale = scale;
     shared_->radiusTexels = footprint.radiusPixels * scale;

@@ -76,7 +76,19 @@ inline constexpr double kLampReach = 2.0;
 // follow: campfire at ¼ erred 21% against 4.4% at full resolution, nearly all of it there, so mixed
 // resolution draws these pixels again at full resolution (4.7%; docs/design-notes.md). Width 0
 // where no point light near a particle lies in front of the eye.
+// `pixels`: the sum of the lamps' own squares' areas, which the union's may far exceed where two
+// lamps lie far apart on screen.
+struct LampPeaks {
+    glm::ivec4 rect{0};
+    long long pixels = 0;
+};
+LampPeaks lampPeaks(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin);
 glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin);
+// Whether the peaks are worth drawing again through one rect (the edge target is one): its area at
+// most kPeakRectSlack × their own at ¼'s reach. Two lamps at opposite sides of the image would
+// otherwise redraw everything between them; such a frame keeps full resolution instead.
+bool lampPeaksCompact(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view);
+inline constexpr double kPeakRectSlack = 4.0;
 
 // media_scale=auto: 1 unless the billboards cover the pixels the layer is composed over (`composed`,
 // mediumRect's share of the image, where the upsampling pays) more than kHalfScaleCoverage times
