@@ -51,7 +51,7 @@ TEST_F(OffscreenMedia, DepthAwareUpsamplingBeatsPlainBilinearAtTheWingsSilhouett
 
 // A point light among the particles (campfire's fire) in the fast tier at 1280×720: media_scale=auto
 // reduces the target (keeping 16 texels across the fire's particles, medium_footprint.h) and draws
-// the pixels around the lamp's image again at full resolution (lampPeakRect), where its scattered
+// the pixels around the lamp's image again at full resolution (lampImages, lampPeaks), where its scattered
 // light peaks as 1/distance; upsampled there instead, the peak smears. Measured: 1.4% against the
 // full-resolution frame with the redraw, 15.5% without.
 TEST_F(OffscreenMedia, ALampsPeakIsDrawnAgainAtFullResolution) {

@@ -1,8 +1,8 @@
 // frame/media_settings.cpp's defaults, and common/medium_footprint.cpp: splatFootprint and automaticMediaScale,
 // what media_scale=auto is chosen from, particlesNearMeshes, which particles balanced draws with the
 // mesh-crossing variant, particlesNearLamps, which the splats draw with the fragment lamps, and the
-// rects the fast tier draws its edges again within (billboardRect, nearMeshRect, lampPeakRect,
-// intersectRects) and composes within (mediumRect),
+// rects the fast tier draws its edges again within (billboardRect, nearMeshRect, lampImages and lampPeaks,
+// intersectRects) and composes within (mediumRect, growRect),
 // and particlesClearOfMeshes, which splats the depth test alone clips.
 #include <gtest/gtest.h>
 
@@ -202,6 +202,11 @@ TEST(MediumRect, TheParticlesSpheresAndTheVolumesBoxes) {
     EXPECT_EQ(mediumRect(ParticleSet{}, {}, view, 3).z, 0) << "nothing drawn";
 }
 
+// What the renderer draws again at full resolution for these lights (lampImages, then lampPeaks).
+glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin) {
+    return lampPeaks(lampImages(particles, lights, view), view, margin).rect;
+}
+
 // A point light within two radii of a particle: the pixels within the margin of its image, where a
 // reduced target's upsampling cannot follow its peak. None for a light far from every particle, a
 // spot (whose cone edge is no point), or a point light behind the eye.
@@ -242,11 +247,11 @@ TEST(LampPeakRect, LampsFarApartOnScreenAreNotCompact) {
     left.position = {-6.0, 0.0, -10.0};   // pixel 40
     right.position = {6.0, 0.0, -10.0};   // pixel 160
     beside.position = {-5.5, 0.0, -10.0};  // pixel 45
-    EXPECT_TRUE(lampPeaksCompact(particles, {left}, view));
-    EXPECT_TRUE(lampPeaksCompact(particles, {left, beside}, view)) << "two squares that overlap";
-    EXPECT_FALSE(lampPeaksCompact(particles, {left, right}, view)) << "120 pixels apart";
-    EXPECT_TRUE(lampPeaksCompact(particles, {}, view));
-    const LampPeaks both = lampPeaks(particles, {left, right}, view, 5);
+    EXPECT_TRUE(lampPeaksCompact(lampImages(particles, {left}, view), view));
+    EXPECT_TRUE(lampPeaksCompact(lampImages(particles, {left, beside}, view), view)) << "two squares that overlap";
+    EXPECT_FALSE(lampPeaksCompact(lampImages(particles, {left, right}, view), view)) << "120 pixels apart";
+    EXPECT_TRUE(lampPeaksCompact(lampImages(particles, {}, view), view));
+    const LampPeaks both = lampPeaks(lampImages(particles, {left, right}, view), view, 5);
     EXPECT_EQ(both.pixels, 2LL * 10 * 10);
 }
 

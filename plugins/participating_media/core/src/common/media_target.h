@@ -23,7 +23,7 @@ struct MediaTarget {
     // The viewport's pixels outside which the medium draws nothing (mediumRect, grown by the
     // upsampling's reach): the host composes the layer only there (MediaLayer::coverRect).
     glm::ivec4 cover{0};
-    // A reduced target's lamp peaks (lampPeakRect), drawn again at full resolution in modes that
+    // A reduced target's lamp peaks (lampPeaks), drawn again at full resolution in modes that
     // draw edges; width 0: none.
     glm::ivec4 peak{0};
 };

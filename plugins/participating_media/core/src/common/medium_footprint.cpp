@@ -178,37 +178,45 @@ glm::ivec4 meshEdgeRect(const std::vector<OccluderBox>& meshes, const ParticleSe
     return nearMeshRect(meshes, particles, kEdgeReach, view, margin);
 }
 
+glm::ivec4 growRect(glm::ivec4 rect, int margin, const gpu::View& view) {
+    if (rect.z <= 0 || margin == 0) return rect;
+    return intersectRects(rect + glm::ivec4(-margin, -margin, 2 * margin, 2 * margin), {0, 0, view.width, view.height});
+}
+
 glm::ivec4 mediumRect(const ParticleSet& particles, const std::vector<Volume>& volumes, const gpu::View& view, int margin) {
     glm::ivec4 rect = billboardRect(particles, std::vector<std::uint8_t>(particles.size(), 1), view, margin);
     for (const Volume& v : volumes) rect = unionRects(rect, boxRect(occluderBox(v.world, -0.5 * v.size, 0.5 * v.size), view, margin));
     return rect;
 }
 
-LampPeaks lampPeaks(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin) {
+std::vector<glm::dvec2> lampImages(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view) {
     const SphereBounds bounds(view);
-    LampPeaks peaks;
-    for (const Light& lamp : lights) {
-        if (lamp.kind != gpu::LightKind::Point) continue;
-        bool near = false;
-        for (std::size_t i = 0; i < particles.size() && !near; ++i)
-            near = glm::length(particles.position[i] - lamp.position) < kLampReach * particles.radius[i];
+    std::vector<glm::dvec2> images;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const Light& lamp = lights[i];
         const bool ahead = view.orthographic || glm::dot(lamp.position - view.origin, view.forward) > view.znear;
-        if (!near || !ahead) continue;
-        const auto [lo, hi] = bounds(lamp.position, 0.0);  // its image: a point
-        const glm::ivec4 own = pixelRect(lo, hi, view, margin);
+        if (lamp.kind != gpu::LightKind::Point || !ahead) continue;
+        const int index[1] = {static_cast<int>(i)};
+        const std::vector<std::uint8_t> near = particlesNearLamps(particles, lights, index, kLampReach);
+        if (std::any_of(near.begin(), near.end(), [](std::uint8_t n) { return n != 0; }))
+            images.push_back(bounds(lamp.position, 0.0).first);  // a point: both corners are it
+    }
+    return images;
+}
+
+LampPeaks lampPeaks(const std::vector<glm::dvec2>& images, const gpu::View& view, int margin) {
+    LampPeaks peaks;
+    for (const glm::dvec2& image : images) {
+        const glm::ivec4 own = pixelRect(image, image, view, margin);
         peaks.rect = unionRects(peaks.rect, own);
         peaks.pixels += static_cast<long long>(own.z) * own.w;
     }
     return peaks;
 }
 
-glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin) {
-    return lampPeaks(particles, lights, view, margin).rect;
-}
-
-bool lampPeaksCompact(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view) {
+bool lampPeaksCompact(const std::vector<glm::dvec2>& images, const gpu::View& view) {
     constexpr int kQuarterReach = 5;  // upsampleReach at ¼: a texel of 4 pixels and one more
-    const LampPeaks peaks = lampPeaks(particles, lights, view, kQuarterReach);
+    const LampPeaks peaks = lampPeaks(images, view, kQuarterReach);
     return static_cast<double>(peaks.rect.z) * peaks.rect.w <= kPeakRectSlack * static_cast<double>(peaks.pixels);
 }
 
@@ -224,10 +232,6 @@ float automaticImpostorScale(double radiusTexels) {
     if (!(radiusTexels > 0.0)) return 0.5f;
     const double eighths = std::ceil(8.0 * kAutoImpostorRadiusTexels / radiusTexels - 1e-9);
     return static_cast<float>(std::clamp(eighths, 2.0, 4.0) / 8.0);
-}
-
-bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds) {
-    return lampAmongParticles(lights, bounds, gpu::LightKind::Point) || lampAmongParticles(lights, bounds, gpu::LightKind::Spot);
 }
 
 bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds, gpu::LightKind kind) {

@@ -142,7 +142,10 @@ void MediaRenderer::planTarget(const GraphFrame& context) {
     // Where the layer may hold anything: the whole viewport (0) unless the mode draws within the medium.
     const glm::ivec4 medium = entry.withinMedium ? mediumRect(*particles_, *volumes_, v, 0) : glm::ivec4(0);
     // A point light's peak is drawn again at full resolution where the mode draws edges.
-    const bool peaksRedrawn = entry.edges && entry.lampPeaks && !settings_.upsampleOnly && lampPeaksCompact(*particles_, context.host.lights, v);
+    const std::vector<glm::dvec2> lamps = entry.edges && entry.lampPeaks && !settings_.upsampleOnly
+                                              ? lampImages(*particles_, context.host.lights, v)
+                                              : std::vector<glm::dvec2>{};
+    const bool peaksRedrawn = entry.edges && entry.lampPeaks && !settings_.upsampleOnly && lampPeaksCompact(lamps, v);
     const float scale = settings_.mediaScaleAuto ? automaticScale(context, footprint, medium, peaksRedrawn) : std::min(settings_.mediaScale, 1.0f);
     stats_.mediaScale = scale;
     shared_->radiusTexels = footprint.radiusPixels * scale;
@@ -153,8 +156,8 @@ void MediaRenderer::planTarget(const GraphFrame& context) {
     const bool reduced = target.size != glm::ivec2(v.width, v.height);
     if (reduced) target.name = "media_color_low";
     const int reach = upsampleReach(target);
-    target.cover = medium.z > 0 ? mediumRect(*particles_, *volumes_, v, reach) : medium;
-    if (reduced && peaksRedrawn) target.peak = lampPeakRect(*particles_, context.host.lights, v, reach);
+    target.cover = growRect(medium, reach, v);
+    if (reduced && peaksRedrawn) target.peak = lampPeaks(lamps, v, reach).rect;
 }
 
 void MediaRenderer::addLightSlices(gpu::FrameGraph& graph, GraphFrame& context) {

@@ -55,6 +55,8 @@ glm::ivec4 boxRect(const OccluderBox& box, const gpu::View& view, int margin);
 
 // The pixels two rects (x, y, width, height) share; width 0 where none.
 glm::ivec4 intersectRects(glm::ivec4 a, glm::ivec4 b);
+// `rect` grown by `margin` pixels each way and clipped to the view; width 0 stays so.
+glm::ivec4 growRect(glm::ivec4 rect, int margin, const gpu::View& view);
 // The smallest rect holding both (one of width 0 holds nothing).
 glm::ivec4 unionRects(glm::ivec4 a, glm::ivec4 b);
 
@@ -70,24 +72,24 @@ glm::ivec4 mediumRect(const ParticleSet& particles, const std::vector<Volume>& v
 // (docs/design-notes.md).
 inline constexpr double kLampReach = 2.0;
 
-// Around each point light among the particles (within kLampReach radii of one), the pixels within
-// `margin` of its image (a reduced target's upsampling reach: the pixels that read the texels
-// around it). Its scattered light peaks there as 1/distance, which bilinear upsampling cannot
-// follow: campfire at ¼ erred 21% against 4.4% at full resolution, nearly all of it there, so mixed
-// resolution draws these pixels again at full resolution (4.7%; docs/design-notes.md). Width 0
-// where no point light near a particle lies in front of the eye.
-// `pixels`: the sum of the lamps' own squares' areas, which the union's may far exceed where two
-// lamps lie far apart on screen.
+// The images (ndc) of the point lights among the particles (within kLampReach radii of one) in
+// front of the eye. Around each, the light it scatters peaks as 1/distance, which a reduced
+// target's bilinear upsampling cannot follow: campfire at ¼ erred 21% against 4.4% at full
+// resolution, nearly all of it there. So mixed resolution draws the pixels within the upsampling's
+// reach of each image again at full resolution (4.7%; docs/design-notes.md).
+std::vector<glm::dvec2> lampImages(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view);
+// Those pixels: each image's square, grown by `margin` and clipped to the view; `rect` their union,
+// `pixels` the sum of the squares' areas, which the union's may far exceed where two lamps lie far
+// apart on screen. Width 0 where there is none.
 struct LampPeaks {
     glm::ivec4 rect{0};
     long long pixels = 0;
 };
-LampPeaks lampPeaks(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin);
-glm::ivec4 lampPeakRect(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view, int margin);
+LampPeaks lampPeaks(const std::vector<glm::dvec2>& images, const gpu::View& view, int margin);
 // Whether the peaks are worth drawing again through one rect (the edge target is one): its area at
 // most kPeakRectSlack × their own at ¼'s reach. Two lamps at opposite sides of the image would
 // otherwise redraw everything between them; such a frame keeps full resolution instead.
-bool lampPeaksCompact(const ParticleSet& particles, const std::vector<Light>& lights, const gpu::View& view);
+bool lampPeaksCompact(const std::vector<glm::dvec2>& images, const gpu::View& view);
 inline constexpr double kPeakRectSlack = 4.0;
 
 // media_scale=auto: 1 unless the billboards cover the pixels the layer is composed over (`composed`,
@@ -118,8 +120,7 @@ inline constexpr double kAutoImpostorRadiusTexels = 6.0;
 // a fit across them has nothing to follow (docs/design-notes.md).
 inline constexpr double kConstantSplatPixels = 2.0;
 
-// Whether a point or spot light (`kind`: only that kind) lies inside `bounds` (the particles').
-bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds);
+// Whether a point or spot light (`kind`) lies inside `bounds` (the particles').
 bool lampAmongParticles(const std::vector<Light>& lights, const Aabb& bounds, gpu::LightKind kind);
 
 // Whether a point or spot light lies inside a particle that takes more than a tenth of a ray
