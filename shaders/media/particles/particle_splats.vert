@@ -33,7 +33,12 @@ void main() {
     int rank = uFirstRank + gl_InstanceID;
 #endif
     splatVertex(rank, kCorners[gl_VertexID]);
-#ifndef SPLAT_DEPTH_TESTED
+#if defined(SPLAT_FAR_DEPTH)
+    // A particle a mesh lies inside, drawn with this program where every surface lies behind its
+    // sphere (the pass tests for a quad nearer than the scene): its farthest depth.
+    vec4 farthest = frame.viewProjection * vec4(vCentreRadius.xyz + frame.cameraForward.xyz * vCentreRadius.w, 1.0);
+    gl_Position.z = (farthest.w > 0.0 ? clamp(farthest.z / farthest.w, 0.0, 1.0) : 1.0) * gl_Position.w;
+#elif !defined(SPLAT_DEPTH_TESTED)
     // Where the pass tests depth, a particle that fetches it takes its sphere's nearest depth (the
     // near plane's where that lies closer): the test then drops only what a surface hides whole.
     vec4 nearest = frame.viewProjection * vec4(vCentreRadius.xyz - frame.cameraForward.xyz * vCentreRadius.w, 1.0);

@@ -3,6 +3,8 @@
 // ray (clipped at the opaque surface when soft particles are on), opacity α = 1 − e^−τ, and the
 // in-scattered source J at the kernel's centroid on that segment. Output (α·J, α) blends
 // premultiplied over what is behind; the alpha channel accumulates the view transmittance.
+// PARTICLE_SPLAT_RUN: drawn by the splat pass for the particles a mesh lies inside, into a target
+// whose first pixel may be offset (the edges' rect), under its depth or stencil test.
 #include "media/bindings.glsl"
 #include "common/math.glsl"
 #include "common/frame.glsl"
@@ -16,6 +18,11 @@
 layout(binding = MEDIA_SCENE_DEPTH_UNIT) uniform sampler2D uSceneDepth;
 layout(location = 0) uniform int uSoftParticles;
 layout(location = 1) uniform vec2 uFullResScale;  // full-resolution pixels per target texel (offscreen media)
+#ifdef PARTICLE_SPLAT_RUN
+layout(location = 13) uniform vec2 uFragOffset;  // the target's first pixel in the viewport
+// The tests first: the stencil of the edges' redraw then spares the shading (no depth is written).
+layout(early_fragment_tests) in;
+#endif
 
 flat in ivec2 vParticle;  // x: index, y: draw rank
 flat in float vFog;        // the fog factor at the particle's centre (common/fog.glsl)
@@ -26,6 +33,9 @@ void main() {
     GpuParticle particle = particles[vParticle.x];
     vec3 origin, dir;
     vec2 fragCoord = gl_FragCoord.xy * uFullResScale;  // the full-resolution position this texel stands for
+#ifdef PARTICLE_SPLAT_RUN
+    fragCoord += uFragOffset;
+#endif
     cameraRay(fragCoord, origin, dir);
     Chord chord = chordOf(origin, dir, particle.positionRadius.xyz, particle.positionRadius.w);
     if (chord.halfChord <= 0.0) discard;

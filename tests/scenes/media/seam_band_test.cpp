@@ -6,7 +6,7 @@
 // Rel-RMSE over the band: the band's RMS error over its mean reference luminance.
 //
 // Bounds (the issue's): fast ≤ 1.5× exact's band error and ≤ 0.5× that of billboards clipped hard
-// by the mesh (exact with soft_particles=off), balanced ≤ 1.2× exact's.
+// by the mesh (exact with soft_particles=off), balanced ≤ 1.2× exact's (asserted; fast's are not met).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -51,19 +51,24 @@ protected:
 };
 
 // The settings every scene is measured in, in this order.
-const std::vector<std::vector<std::string>> kSettings{
-    {}, {"soft_particles=off"}, {"quality=balanced"}, {"quality=fast"}, {"mode=blocks", "quality=balanced"}, {"mode=blocks", "quality=fast"}};
-const std::vector<std::string> kNames{"exact", "exact hard-clipped", "balanced", "fast", "blocks balanced", "blocks fast"};
-enum { kExact, kHard, kBalanced, kFast, kBlocksBalanced, kBlocksFast };
+const std::vector<std::vector<std::string>> kSettings{{},
+                                                      {"soft_particles=off"},
+                                                      {"quality=balanced"},
+                                                      {"quality=fast"},
+                                                      {"mode=blocks", "quality=balanced"},
+                                                      {"mode=blocks", "quality=fast"},
+                                                      {"quality=balanced", "cut_lighting=off"}};
+const std::vector<std::string> kNames{"exact", "exact hard-clipped", "balanced", "fast", "blocks balanced", "blocks fast", "balanced, cut_lighting=off"};
+enum { kExact, kHard, kBalanced, kFast, kBlocksBalanced, kBlocksFast, kBalancedUncut };
 
 // Today's levels, the same assertions on every scene: soft particles cut the kernel at the mesh
-// (exact under half the hard-clipped error), balanced, blocks and fast under fixed band errors, and
-// blocks in fast under particles in fast (the issue's: the seam handling blocks exist for, at
-// fast-tier cost). Prints the three ratios beside them. The bounds are band errors, not
-// multiples of exact's: the slices' cubic between planes took exact's own band error down 3x on
-// cumulus_aircraft, and a ratio would have failed tiers whose error fell too.
+// (exact under half the hard-clipped error), balanced within the 1.2x exact and under its
+// own error with the particles a mesh enters left to the fit (cut_lighting=off), blocks and fast
+// under fixed band errors, and blocks in fast under particles in fast (the issue's: the seam
+// handling blocks exist for, at fast-tier cost). Prints the three ratios beside them.
+// Fast's bound is a band error, not the multiple of exact's, which it does not meet yet.
 struct Levels {
-    double balancedBand, blocksBand, fastBand;
+    double blocksBand, fastBand, uncutShare;  // uncutShare: balanced's band error over cut_lighting=off's, at most
 };
 
 void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
@@ -72,14 +77,17 @@ void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
                 "(<= 0.5)\n",
                 e[kBalanced].band / e[kExact].band, e[kFast].band / e[kExact].band, e[kFast].band / e[kHard].band);
     EXPECT_LE(e[kExact].band, 0.5 * e[kHard].band) << "soft particles cut the kernel at the mesh";
-    EXPECT_LE(e[kBalanced].band, levels.balancedBand);
+    EXPECT_LE(e[kBalanced].band, 1.2 * e[kExact].band) << "balanced within the issue's bound";
+    EXPECT_LE(e[kBalanced].band, levels.uncutShare * e[kBalancedUncut].band) << "the exact program on the particles a mesh enters";
     EXPECT_LE(e[kBlocksBalanced].band, levels.blocksBand);
     EXPECT_LE(e[kFast].band, levels.fastBand);
     EXPECT_LT(e[kBlocksFast].band, e[kFast].band) << "blocks in fast err less in the band than particles in fast";
 }
 
 // Measured at 320x180 (single scattering), band of 2166 pixels: exact 0.47 %, hard-clipped 2.67 %,
-// balanced 0.75 %, fast 2.17 %, blocks 0.78 % / 1.90 %. Before the slices' cubic between planes
+// balanced 0.53 % (1.12x exact; 0.70 % with cut_lighting=off, 0.75 % before the particles the wing
+// enters were lit per fragment and balanced took slice detail 6 near meshes), fast 2.17 %, blocks
+// 0.78 % / 1.90 %. Before the slices' cubic between planes
 // (straight lines): exact 0.54 %, hard-clipped 2.62 %,
 // balanced 0.85 % (1.61 % before balanced took the sun's mesh visibility per fragment on the
 // particles a mesh crosses), fast 2.29 % (4.26 % before its splats were drawn again at full
@@ -89,17 +97,18 @@ void expectLevels(const std::vector<BandErrors>& e, const Levels& levels) {
 // now errs as at full resolution: the rest is its per-particle fit and coarser slices, not yet
 // the 1.5x exact. The bounds below hold today's levels.
 TEST_F(SeamBand, WingThroughCloud) {
-    expectLevels(measure(mediaScene("wing_through_cloud"), kSettings, kNames), {.balancedBand = 0.009, .blocksBand = 0.0095, .fastBand = 0.026});
+    expectLevels(measure(mediaScene("wing_through_cloud"), kSettings, kNames), {.blocksBand = 0.0095, .fastBand = 0.026, .uncutShare = 0.85});
 }
 
-// Measured at 320x180, band of 1184 pixels: exact 0.27 %, hard-clipped 2.45 %, balanced 0.44 %,
-// fast 1.46 %, blocks 1.40 % / 1.16 %; before the slices' cubic exact 0.79 %, hard-clipped 2.49 %,
+// Measured at 320x180, band of 1184 pixels: exact 0.27 %, hard-clipped 2.45 %, balanced 0.31 %
+// (1.14x exact; 0.32 % with cut_lighting=off, 0.44 % before slice detail 6 near meshes), fast
+// 1.46 %, blocks 1.40 % / 1.16 %; before the slices' cubic exact 0.79 %, hard-clipped 2.49 %,
 // balanced 0.95 % (0.98 % before), fast 2.65 %, blocks 1.39 % / 1.23 %. At this size the billboards are too small
 // for media_scale=auto to reduce the target, so fast is drawn at full resolution here. At ½, as
 // auto chose before: fast 3.17 % (5.56 % before the edges), blocks fast 2.30 % (5.33 % before the
 // edges, 3.35 % before the finer slices).
 TEST_F(SeamBand, CumulusAircraft) {
-    expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.balancedBand = 0.006, .blocksBand = 0.016, .fastBand = 0.02});
+    expectLevels(measure(contentScene("cumulus_aircraft"), kSettings, kNames), {.blocksBand = 0.016, .fastBand = 0.02, .uncutShare = 1.0});
 }
 
 // slice_crop (planning/slice_crop.h: a finer view of the sun's slices over the airliner) takes

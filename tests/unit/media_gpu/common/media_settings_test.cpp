@@ -20,7 +20,8 @@ MediaRenderSettings readWith(const std::vector<std::string>& assignments) {
     return readMediaSettings(settings, table);
 }
 
-// Blocks in fast take finer slices where a mesh reaches into the medium; no other mode or tier does.
+// Blocks in fast and particles in balanced take finer slices where a mesh reaches into the medium;
+// no other mode or tier does.
 TEST(MediaSettings, BlocksInFastTakeFinerSlicesNearMeshes) {
     const MediaRenderSettings blocks = readWith({"mode=blocks", "quality=fast"});
     EXPECT_EQ(blocks.slices, 16);
@@ -29,8 +30,12 @@ TEST(MediaSettings, BlocksInFastTakeFinerSlicesNearMeshes) {
     EXPECT_FLOAT_EQ(blocks.sliceTexelsPerRadiusNearMeshes, 4.0f);
     const MediaRenderSettings tierOnly = mediaSettingsForTier(QualityTier::Fast, builtInTechniques(), "blocks");
     EXPECT_EQ(tierOnly.slicesNearMeshes, 32) << "a host that takes the tier's settings gets the same";
+    const MediaRenderSettings balanced = readWith({"mode=particles", "quality=balanced"});
+    EXPECT_FLOAT_EQ(balanced.sliceTexelsPerRadius, 4.0f);
+    EXPECT_FLOAT_EQ(balanced.sliceTexelsPerRadiusNearMeshes, 6.0f);
+    EXPECT_EQ(balanced.slicesNearMeshes, 0);
     for (const auto& other : {std::vector<std::string>{"mode=particles", "quality=fast"}, {"mode=raymarch", "quality=fast"},
-                              {"mode=blocks", "quality=balanced"}, {"mode=blocks", "quality=exact"}}) {
+                              {"mode=blocks", "quality=balanced"}, {"mode=blocks", "quality=exact"}, {"mode=particles", "quality=exact"}}) {
         const MediaRenderSettings s = readWith(other);
         EXPECT_EQ(s.slicesNearMeshes, 0) << other[0] << " " << other[1];
         EXPECT_EQ(s.sliceTexelsPerRadiusNearMeshes, 0.0f) << other[0] << " " << other[1];

@@ -120,6 +120,24 @@ TEST(MeshReachesInto, TheMeshBoxsHullMeetsTheMediumsBounds) {
     EXPECT_FALSE(meshReachesInto({plate}, Aabb{})) << "no medium";
 }
 
+// A ground or wall spans the medium across its two longest axes; a wing inside it does not.
+TEST(BoxSpansMedium, AGroundSpansItAndAWingInsideItDoesNot) {
+    const Aabb medium{glm::dvec3(-5.0, 2.0, -5.0), glm::dvec3(5.0, 8.0, 5.0)};
+    OccluderBox ground;
+    ground.half = {40.0, 0.0, 40.0};
+    EXPECT_TRUE(boxSpansMedium(ground, medium));
+    ground.half.z = 4.0;
+    EXPECT_FALSE(boxSpansMedium(ground, medium)) << "a strip narrower than the medium";
+    OccluderBox wall;  // upright, across x and y
+    wall.centre = {0.0, 5.0, 1.0};
+    wall.half = {6.0, 4.0, 0.1};
+    EXPECT_TRUE(boxSpansMedium(wall, medium));
+    OccluderBox wing;
+    wing.centre = {0.0, 4.0, 0.0};
+    wing.half = {4.5, 0.04, 1.1};
+    EXPECT_FALSE(boxSpansMedium(wing, medium));
+}
+
 // A unit cube whose nearest face lies `gap` metres right of `p` (along +x).
 OccluderBox cubeRightOf(const glm::dvec3& p, double gap) {
     OccluderBox box;

@@ -72,12 +72,21 @@ TEST_F(ShaderVariants, ParticleSplats) {
                 for (bool crossings : {false, true})
                     for (bool multiple : {false, true})
                         for (bool pointLamps : {false, lamps})
-                            descs.push_back(particleSplatDesc({.eyeInside = eyeInside,
-                                                               .lamps = lamps,
-                                                               .pointLamps = pointLamps,
-                                                               .constant = constant,
-                                                               .meshCrossings = crossings,
-                                                               .multiple = multiple}));
+                            for (bool farDepth : {false, true})
+                                descs.push_back(particleSplatDesc({.eyeInside = eyeInside,
+                                                                   .lamps = lamps,
+                                                                   .pointLamps = pointLamps,
+                                                                   .constant = constant,
+                                                                   .meshCrossings = crossings,
+                                                                   .multiple = multiple,
+                                                                   .farDepth = farDepth}));
+    expectCompiles(descs);
+}
+
+// The exact program as the splat pass draws the particles a mesh lies inside.
+TEST_F(ShaderVariants, ParticleCutRuns) {
+    std::vector<gpu::ProgramDesc> descs;
+    for (bool rankList : {false, true}) addBothLightings(descs, particleCutRunDesc(rankList));
     expectCompiles(descs);
 }
 

@@ -1,5 +1,6 @@
 // particles/particle_splat_pass.cpp: splatRuns, the runs of the draw order the splats draw with and
-// without the mesh-crossing variant, the fragment lamps and the depth fetch.
+// without the mesh-crossing variant, the fragment lamps and the depth fetch, and the exact program's
+// runs of the particles a mesh lies inside.
 #include <gtest/gtest.h>
 
 #include "particles/particle_splat_pass.h"
@@ -86,6 +87,29 @@ TEST(SplatRuns, AShortRunClearOfMeshesJoinsTheFetchingNeighboursButNeverTheOther
     const auto masked = splatRuns(identity(3), {clear, 0, clear}, 8, static_cast<std::uint8_t>(~clear));
     ASSERT_EQ(masked.size(), 1u);
     EXPECT_FALSE(masked[0].depthTested);
+}
+
+// A particle a mesh lies inside is drawn in runs of its own (the exact program, and where the pass
+// tests depth its own fit variant as well): no run of another kind takes it in or joins across it,
+// and its lamp bit still splits its runs (its fit left the lamps out).
+TEST(SplatRuns, AMeshInsideIsDrawnInRunsOfItsOwn) {
+    constexpr std::uint8_t inside = kSplatMeshInside, near = kSplatNearMesh;
+    const auto runs = splatRuns(identity(7), {near, inside | near, inside, inside | near, inside | kSplatNearLamp, near, inside}, 8);
+    ASSERT_EQ(runs.size(), 5u);
+    EXPECT_FALSE(runs[0].meshInside);
+    EXPECT_TRUE(runs[1].meshInside);
+    EXPECT_EQ(runs[1].first, 1u);
+    EXPECT_EQ(runs[1].count, 3u) << "the crossing variant takes a particle no mesh crosses";
+    EXPECT_TRUE(runs[1].meshCrossings);
+    EXPECT_TRUE(runs[2].meshInside && runs[2].lamps);
+    EXPECT_FALSE(runs[3].meshInside) << "a short gap between two runs of particles a mesh lies inside stays apart";
+    EXPECT_TRUE(runs[4].meshInside);
+    const auto between = splatRuns(identity(3), {near, inside, near}, 8);
+    ASSERT_EQ(between.size(), 3u) << "the crossing variant does not take a particle a mesh lies inside";
+    EXPECT_TRUE(between[1].meshInside);
+    const auto clear = splatRuns(identity(1), {inside | kSplatClearOfMeshes}, 8);
+    ASSERT_EQ(clear.size(), 1u);
+    EXPECT_FALSE(clear[0].depthTested) << "a sphere that reaches a box is never clipped by the depth test alone";
 }
 
 }  // namespace

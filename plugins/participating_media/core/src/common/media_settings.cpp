@@ -64,7 +64,7 @@ const SharedField kSharedFields[] = {
      Acts::LitBySlices},
     {{{.key = "slice_detail", .help = "slice texels across the median particle's radius",
        .type = SettingType::Number, .min = 0.25, .max = 16.0,
-       .defaultValue = "3 (balanced: 4, fast: 2; blocks in fast where a mesh reaches into the medium: 4)",
+       .defaultValue = "3 (balanced: 4, fast: 2; where a mesh reaches into the medium, particles in balanced: 6, blocks in fast: 4)",
        .actsWhen = "with slice_resolution=auto"},
       &setSliceDetail, &sliceResolutionAuto},
      Acts::LitBySlices},

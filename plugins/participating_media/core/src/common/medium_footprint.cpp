@@ -260,6 +260,15 @@ bool meshReachesInto(const std::vector<OccluderBox>& meshes, const Aabb& bounds)
     });
 }
 
+bool boxSpansMedium(const OccluderBox& box, const Aabb& bounds) {
+    const glm::dvec3 half = axisAlignedHalf(box);
+    // The axis the box is thinnest along is the one it does not span.
+    const int thin = half.x <= half.y && half.x <= half.z ? 0 : (half.y <= half.z ? 1 : 2);
+    for (int a = 0; a < 3; ++a)
+        if (a != thin && (box.centre[a] - half[a] > bounds.min[a] || box.centre[a] + half[a] < bounds.max[a])) return false;
+    return true;
+}
+
 std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach) {
     std::vector<std::uint8_t> near(particles.size(), 0);
     const Aabb bounds = particleBounds(particles);

@@ -28,8 +28,9 @@ FragmentLamps fragmentLamps(const std::vector<Light>& lights);
 // Per particle, the splat variant that draws it (particle_lighting.comp SplatFlags): near a mesh
 // (the mesh-crossing variant), near a fragment lamp (MEDIA_FRAGMENT_LAMPS; the fit takes the lamps
 // of the others), clear of meshes (particlesClearOfMeshes: the depth test clips it, with no
-// scene-depth fetch; only the splat pass reads this bit).
-enum SplatFlag : std::uint8_t { kSplatNearMesh = 1, kSplatNearLamp = 2, kSplatClearOfMeshes = 4 };
+// scene-depth fetch; only the splat pass reads this bit), a mesh inside it (the splat pass shades
+// it per fragment as the exact tier does, whatever its other bits; the lighting pass ignores it).
+enum SplatFlag : std::uint8_t { kSplatNearMesh = 1, kSplatNearLamp = 2, kSplatClearOfMeshes = 4, kSplatMeshInside = 8 };
 
 // Per-particle lighting (the fast tiers): each particle's source fitted over its billboard, in draw
 // order, from nine rays through it.

@@ -6,6 +6,7 @@
 #include "common/kernel_table.h"
 #include "common/lit_media_inputs.h"
 #include "common/frame_blocks.h"
+#include "particles/particle_pass.h"
 #include "nimbus/gpu/shader_program.h"
 #include "nimbus/gpu/frame_layout.h"
 
@@ -15,16 +16,30 @@ namespace {
 constexpr GLint kFragmentSunLocation = 7;    // particle_light_layout.glsl uFragmentSun
 constexpr GLint kFragmentLampsLocation = 8;  // particle_light_layout.glsl uFragmentLamps
 constexpr GLint kFirstRankLocation = 12;     // particle_splats.vert uFirstRank
-constexpr GLint kFragOffsetLocation = 13;    // particle_splats.frag uFragOffset
+constexpr GLint kFragOffsetLocation = 13;    // particle_splats.frag and particles.frag uFragOffset
+constexpr GLint kSoftParticlesLocation = 0;  // particles.frag uSoftParticles
 
 bool sameVariant(const SplatRun& a, const SplatRun& b) {
-    return a.meshCrossings == b.meshCrossings && a.lamps == b.lamps && a.depthTested == b.depthTested;
+    return a.meshCrossings == b.meshCrossings && a.lamps == b.lamps && a.depthTested == b.depthTested && a.meshInside == b.meshInside;
 }
 
 // Whether run a's variant draws b's particles as theirs would: the lamp bit never changes, the
-// crossing variant takes a particle no mesh crosses, and the depth fetch takes any particle.
+// crossing variant takes a particle no mesh crosses, and the depth fetch takes any particle. The
+// exact program would take any, but costs every fragment far more: it joins nothing.
 bool covers(const SplatRun& a, const SplatRun& b) {
-    return a.lamps == b.lamps && (a.meshCrossings || !b.meshCrossings) && (!a.depthTested || b.depthTested);
+    return a.meshInside == b.meshInside && a.lamps == b.lamps && (a.meshCrossings || !b.meshCrossings) && (!a.depthTested || b.depthTested);
+}
+
+// One particle's run. A mesh inside it: its sphere reaches a box, so the depth test alone never clips it.
+SplatRun runOf(std::uint32_t rank, std::uint8_t f) {
+    const bool inside = (f & kSplatMeshInside) != 0;
+    return {rank, 0, (f & kSplatNearMesh) != 0, (f & kSplatNearLamp) != 0, !inside && (f & kSplatClearOfMeshes) != 0, inside};
+}
+
+// `state` with its depth test's comparison `compare`.
+gpu::PipelineState comparingDepth(gpu::PipelineState state, GLenum compare) {
+    state.depth.compare = compare;
+    return state;
 }
 
 // The scene depth as the target's depth attachment, read-only: where the host's depth is a depth
@@ -46,7 +61,7 @@ ParticleSplatPass::ParticleSplatPass() : kernelTable_(createKernelTable()) {}
 const gpu::Program& ParticleSplatPass::program(const SplatVariant& variant) {
     gpu::Program& p = programs_.at((variant.eyeInside ? 1 : 0) + (variant.lamps ? 2 : 0) + (variant.constant ? 4 : 0) +
                                 (variant.meshCrossings ? 8 : 0) + (variant.multiple ? 16 : 0) + (variant.rankList ? 32 : 0) + (variant.depthTested ? 64 : 0) +
-                                (variant.lamps && variant.pointLamps ? 128 : 0));
+                                (variant.lamps && variant.pointLamps ? 128 : 0) + (variant.farDepth ? 256 : 0));
     if (!p) p = gpu::compileProgram(particleSplatDesc(variant));
     return p;
 }
@@ -61,6 +76,14 @@ gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant) {
     if (variant.multiple) desc.defines.push_back("MEDIA_MULTIPLE");
     if (variant.rankList) desc.defines.push_back("SPLAT_RANK_LIST");
     if (variant.depthTested) desc.defines.push_back("SPLAT_DEPTH_TESTED");
+    if (variant.farDepth) desc.defines.push_back("SPLAT_FAR_DEPTH");
+    return desc;
+}
+
+gpu::ProgramDesc particleCutRunDesc(bool rankList) {
+    gpu::ProgramDesc desc = particlesDesc(true);
+    desc.defines.push_back("PARTICLE_SPLAT_RUN");
+    if (rankList) desc.defines.push_back("SPLAT_RANK_LIST");
     return desc;
 }
 
@@ -69,8 +92,7 @@ std::vector<SplatRun> splatRuns(const std::vector<std::uint32_t>& order, const s
     std::vector<SplatRun> runs;
     const auto count = static_cast<std::uint32_t>(order.size());
     for (std::uint32_t rank = 0; rank < count; ++rank) {
-        const std::uint8_t f = flags[order[rank]] & mask;
-        const SplatRun own{rank, 0, (f & kSplatNearMesh) != 0, (f & kSplatNearLamp) != 0, (f & kSplatClearOfMeshes) != 0};
+        const SplatRun own = runOf(rank, flags[order[rank]] & mask);
         if (runs.empty() || !sameVariant(runs.back(), own)) runs.push_back(own);
         ++runs.back().count;
     }
@@ -113,8 +135,8 @@ void ParticleSplatPass::declareInputs(gpu::PassBuilder& builder, const GraphFram
                                       const FragmentLamps& lamps, SplatInputs& d) {
     const bool anyLamps = lamps.lamps[0] >= 0;
     d.depth = builder.read(context.sceneDepth);
-    if (anyLamps && context.slices.valid()) d.slices = builder.read(context.slices);
-    if ((anyLamps || variant.meshCrossings) && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
+    if ((anyLamps || variant.meshInside) && context.slices.valid()) d.slices = builder.read(context.slices);
+    if ((anyLamps || variant.meshCrossings || variant.meshInside) && context.shadowMap.valid()) d.shadowMap = builder.read(context.shadowMap);
 }
 
 void ParticleSplatPass::draw(const gpu::PassResources& resources, const SplatInputs& d, const SplatDraw& s, glm::vec2 scale,
@@ -139,7 +161,8 @@ void ParticleSplatPass::draw(const gpu::PassResources& resources, const SplatInp
     s.context.blocks->bind();
     s.buffer.bindParticles();
     s.buffer.bindOrder();
-    if (s.lamps.lamps[0] >= 0) s.buffer.bindLampNeighbourhoods();  // the lamps' neighbour order (splat_source.glsl)
+    // The lamps' neighbour order (splat_source.glsl, and the exact program's lighting.glsl).
+    if (s.lamps.lamps[0] >= 0 || variant.meshInside) s.buffer.bindLampNeighbourhoods();
     s.lighting.bind();
     glBindTextureUnit(kSceneDepthUnit, resources.id(d.depth));
     glBindTextureUnit(kKernelTableUnit, kernelTable_.id());
@@ -155,15 +178,47 @@ void ParticleSplatPass::draw(const gpu::PassResources& resources, const SplatInp
         own.meshCrossings = run.meshCrossings;
         own.lamps = run.lamps;
         own.depthTested = run.depthTested;
-        const GLuint id = program(own).id();
-        glUseProgram(id);
-        glProgramUniform2f(id, 1, scale.x, scale.y);
-        glProgramUniform2f(id, kFragOffsetLocation, offset.x, offset.y);
-        glProgramUniform1i(id, kFragmentSunLocation, s.lamps.sun);
-        if (run.lamps) glProgramUniform1iv(id, kFragmentLampsLocation, kMaxFragmentLamps, s.lamps.lamps.data());
-        glProgramUniform1i(id, kFirstRankLocation, static_cast<GLint>(run.first));
-        glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(run.count));
+        if (!run.meshInside) {
+            drawRun(s, own, run, scale, offset);
+        } else if (!state.depth.test || !variant.cutRays) {
+            // Its quad at the far side: no depth test (a particle a surface hides discards early).
+            if (state.depth.test) gpu::applyPipeline(comparingDepth(state, GL_ALWAYS));
+            drawCutRun(s, run, variant.rankList, scale, offset);
+            if (state.depth.test) gpu::applyPipeline(state);
+        } else {
+            // The exact program costs every fragment it draws: the fit where every surface lies
+            // behind the sphere, the exact program where one lies in front of its far side.
+            own.farDepth = true;
+            gpu::applyPipeline(comparingDepth(state, GL_GREATER));
+            drawRun(s, own, run, scale, offset);
+            gpu::applyPipeline(comparingDepth(state, GL_LEQUAL));
+            drawCutRun(s, run, variant.rankList, scale, offset);
+            gpu::applyPipeline(state);
+        }
     }
+}
+
+void ParticleSplatPass::drawRun(const SplatDraw& s, const SplatVariant& variant, const SplatRun& run, glm::vec2 scale, glm::vec2 offset) {
+    const GLuint id = program(variant).id();
+    glUseProgram(id);
+    glProgramUniform2f(id, 1, scale.x, scale.y);
+    glProgramUniform2f(id, kFragOffsetLocation, offset.x, offset.y);
+    glProgramUniform1i(id, kFragmentSunLocation, s.lamps.sun);
+    if (run.lamps) glProgramUniform1iv(id, kFragmentLampsLocation, kMaxFragmentLamps, s.lamps.lamps.data());
+    glProgramUniform1i(id, kFirstRankLocation, static_cast<GLint>(run.first));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(run.count));
+}
+
+void ParticleSplatPass::drawCutRun(const SplatDraw& s, const SplatRun& run, bool rankList, glm::vec2 scale, glm::vec2 offset) {
+    std::unique_ptr<LocalLightPrograms>& programs = cutPrograms_.at(rankList ? 1 : 0);
+    if (!programs) programs = std::make_unique<LocalLightPrograms>(particleCutRunDesc(rankList));
+    const GLuint id = programs->forLights(s.context.host.lights, s.context.multiple).id();
+    glUseProgram(id);
+    glProgramUniform1i(id, kSoftParticlesLocation, 1);
+    glProgramUniform2f(id, 1, scale.x, scale.y);
+    glProgramUniform2f(id, kFragOffsetLocation, offset.x, offset.y);
+    glProgramUniform1i(id, kFirstRankLocation, static_cast<GLint>(run.first));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(run.count));
 }
 
 }  // namespace nimbus::media

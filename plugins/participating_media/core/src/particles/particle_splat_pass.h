@@ -27,17 +27,32 @@ struct SplatVariant {
     // by draw for a run clear of meshes). The others' quads sit at their sphere's nearest depth, so
     // the test only drops what a surface hides whole, and their fragments fetch the depth.
     bool depthTested = false;
+    // Some particle has a mesh inside it (kSplatMeshInside, in the flags given with it): its runs
+    // take the exact tier's per-fragment program, which reads the slices and the shadow map.
+    bool meshInside = false;
+    // With meshInside: the exact program only on the rays a surface may cut inside the sphere (in
+    // front of its far side), where the pass tests depth; this program's fit on the others.
+    bool cutRays = false;
+    // The quad at its sphere's farthest depth (set by draw for such a run's fit).
+    bool farDepth = false;
 };
 // The splat program (particle_splats.*).
 gpu::ProgramDesc particleSplatDesc(const SplatVariant& variant);
 
+// The program of a run of the particles a mesh lies inside: the exact tier's (particles.*), with
+// the splats' runs, rank list and target offset.
+gpu::ProgramDesc particleCutRunDesc(bool rankList);
+
 // A run of consecutive draw ranks drawn with one program: with the mesh-crossing variant or not,
-// with the fragment lamps or not, clipped by the depth test alone or not.
+// with the fragment lamps or not, clipped by the depth test alone or not. With meshInside the exact
+// tier's program (with SplatVariant::cutRays only where a surface lies in front of a sphere's far
+// side, its own variant elsewhere; depthTested then false).
 struct SplatRun {
     std::uint32_t first = 0, count = 0;
     bool meshCrossings = false;
     bool lamps = false;
     bool depthTested = false;
+    bool meshInside = false;
 };
 // The runs of `order` (particle index per rank) by `flags` (per particle, SplatFlag bits): a
 // variant costs every fragment it draws, flagged or not (llvmpipe), so only the flagged ranks take
@@ -80,9 +95,13 @@ public:
 
 private:
     const gpu::Program& program(const SplatVariant& variant);
+    // A run with the splat program `variant`, or with the exact tier's (a run of particles a mesh lies inside).
+    void drawRun(const SplatDraw& s, const SplatVariant& variant, const SplatRun& run, glm::vec2 scale, glm::vec2 offset);
+    void drawCutRun(const SplatDraw& s, const SplatRun& run, bool rankList, glm::vec2 scale, glm::vec2 offset);
     // By eyeInside + 2·lamps + 4·constant + 8·meshCrossings + 16·multiple + 32·rankList + 64·depthTested
-    // + 128·pointLamps (with lamps), built when first asked for.
-    std::array<gpu::Program, 256> programs_;
+    // + 128·pointLamps (with lamps) + 256·farDepth, built when first asked for.
+    std::array<gpu::Program, 512> programs_;
+    std::array<std::unique_ptr<LocalLightPrograms>, 2> cutPrograms_;  // particleCutRunDesc by rankList
     gpu::Buffer ranks_;          // draw's `ranks`, grown as needed
     std::size_t ranksCapacity_ = 0;
     gpu::Texture kernelTable_;

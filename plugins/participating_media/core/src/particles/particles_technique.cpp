@@ -1,6 +1,7 @@
 #include "particles/particles_technique.h"
 
 #include <algorithm>
+#include <iterator>
 #include <optional>
 
 #include "common/shared_frame.h"
@@ -34,6 +35,16 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
       .actsWhen = "with lighting=particle or particle_exact",
       .showsWith = "a point or spot light inside the medium"},
      &setBoolean<&ParticlesSettings::exactNearLamps>, &perParticleLighting},
+    {{.key = "cut_lighting",
+      .help = "with per-particle lighting, the particles a mesh's box enters: lit per fragment as the exact tier lights "
+              "them, over the whole particle or only on the rays a surface may cut inside it (where the scene depth is a "
+              "depth test; the fit elsewhere), or by the fit, which carries light across the mesh",
+      .type = SettingType::Choice,
+      .words = {"particles", "rays", "off"},
+      .defaultValue = "particles (fast: off)",
+      .actsWhen = "with lighting=particle or particle_exact",
+      .showsWith = "a mesh inside the medium"},
+     &setChoice<&ParticlesSettings::cutLighting>, &perParticleLighting},
     // The two below are the per-fragment pass's; frames exact_near_lamps shades per fragment keep
     // their defaults.
     {{.key = "soft_particles",
@@ -66,6 +77,19 @@ std::vector<std::uint8_t> splatFlags(const std::vector<std::uint8_t>& nearMesh, 
     for (std::size_t i = 0; i < flags.size(); ++i)
         flags[i] = static_cast<std::uint8_t>((flags[i] != 0 ? kSplatNearLamp : 0) | (i < nearMesh.size() && nearMesh[i] != 0 ? kSplatNearMesh : 0));
     return flags;
+}
+
+// The particles a mesh's box enters: shaded per fragment as the exact tier shades them. Not for a
+// box that spans the medium (a ground): it clips them as the fit's kernel table does, and lights
+// what is seen of them evenly, and it would take most of a low cloud (cloud.gltf 379 of 500
+// particles, its balanced frame 4.8 times as long).
+void addMeshInside(std::vector<std::uint8_t>& flags, const std::vector<OccluderBox>& meshes, const ParticleSet& particles) {
+    const Aabb bounds = particleBounds(particles);
+    std::vector<OccluderBox> within;
+    std::copy_if(meshes.begin(), meshes.end(), std::back_inserter(within), [&](const OccluderBox& box) { return !boxSpansMedium(box, bounds); });
+    const std::vector<std::uint8_t> inside = particlesNearMeshes(within, particles, 1.0);
+    for (std::size_t i = 0; i < flags.size(); ++i)
+        if (inside[i] != 0) flags[i] |= kSplatMeshInside;
 }
 
 // At full resolution the splats may take the scene depth as their depth test's.
@@ -135,9 +159,13 @@ private:
         std::vector<std::uint8_t> flags = splatFlags(nearMesh, *frame.particles, context.host.lights, lamps);
         if (context.host.occludersComplete && shared.target.size == glm::ivec2(v.width, v.height))
             addClearOfMeshes(flags, context.host.occluders, *frame.particles, v);
+        if (own.cutLighting != CutLighting::Off && !constant && !context.host.occluders.empty())
+            addMeshInside(flags, context.host.occluders, *frame.particles);
+        const long long inside = std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) { return (f & kSplatMeshInside) != 0; });
         frame.report("exact_lighting", false);
         frame.report("constant_source", constant);
         frame.report("mesh_crossings", crossings);
+        frame.report("mesh_inside_particles", inside);
         frame.report("lamp_particles", static_cast<long long>(std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) {
                                            return (f & kSplatNearLamp) != 0;
                                        })));
@@ -146,7 +174,11 @@ private:
                                                })));
         lightingPass_->add(graph, context, *shared.buffer, frame.particles->size(),
                            {.exact = exact, .constant = constant, .meshCrossings = crossings, .lampRuns = lampRuns}, lamps, flags);
-        const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v), .constant = constant, .meshCrossings = crossings};
+        const SplatVariant variant{.eyeInside = eyeInsideMedium(*frame.particles, v),
+                                   .constant = constant,
+                                   .meshCrossings = crossings,
+                                   .meshInside = inside > 0,
+                                   .cutRays = own.cutLighting == CutLighting::Rays};
         if (!frame.settings->upsampleOnly && !constant) planEdges(context, frame, {variant, flags, lamps});
         frame.report("edge_pixels", static_cast<long long>(edges_ ? edges_->rect.z * edges_->rect.w : 0));
         return splatPass_->add(graph, context, *shared.buffer, *lightingPass_, variant, std::move(flags), lamps, shared.target);
@@ -179,7 +211,10 @@ private:
 
 ParticlesSettings ParticlesSettings::forTier(QualityTier tier) {
     ParticlesSettings s;
-    if (tier == QualityTier::Fast) s.lighting = ParticleLighting::Particle;
+    if (tier == QualityTier::Fast) {
+        s.lighting = ParticleLighting::Particle;
+        s.cutLighting = CutLighting::Off;  // it doubled cumulus_aircraft's fast frame (docs/design-notes.md)
+    }
     if (tier == QualityTier::Balanced) s.lighting = ParticleLighting::ParticleExact;
     return s;
 }
@@ -194,6 +229,13 @@ TechniqueEntry particlesTechnique() {
             .drawsOver = true,
             .withinMedium = true,
             .settings = specsOf(kParticlesFields),
+            // Where a mesh reaches into the medium, balanced takes finer slices: with the particles
+            // a mesh enters lit per fragment (cut_lighting), the light the mesh cuts in the medium
+            // is what is left of its seam band's error (docs/design-notes.md).
+            .sharedDefaults =
+                [](MediaRenderSettings& s, QualityTier tier) {
+                    if (tier == QualityTier::Balanced) s.sliceTexelsPerRadiusNearMeshes = 6.0f;
+                },
             .read = readerOf(kParticlesFields),
             .idle =
                 [](const std::any& read, const MediaRenderSettings& shared) {

@@ -17,6 +17,14 @@ enum class ParticleLighting : std::uint8_t {
     ParticleExact,  // as Particle, each ray shaded as Fragment shades a pixel
 };
 
+// With per-particle lighting, how the particles a mesh's box enters are lit (in the order of the
+// cut_lighting words).
+enum class CutLighting : std::uint8_t {
+    Particles,  // per fragment over the whole particle, as the exact tier lights it
+    Rays,       // per fragment only on the rays a surface may cut inside the sphere, the fit elsewhere
+    Off,        // the fit (with the sun's mesh visibility per fragment in balanced)
+};
+
 struct ParticlesSettings {
     ParticleLighting lighting = ParticleLighting::Fragment;
     // With per-particle lighting: shade a frame per fragment after all where a lamp lies inside the
@@ -27,6 +35,7 @@ struct ParticlesSettings {
     // Integrate the light's transmittance over each particle's layer (off: take it at one point:
     // faster (docs/PERFORMANCE.md), less exact for dense particles).
     bool layerLight = true;
+    CutLighting cutLighting = CutLighting::Particles;
 
     static ParticlesSettings forTier(QualityTier tier);
 };

@@ -136,6 +136,11 @@ bool meshReachesInto(const std::vector<OccluderBox>& meshes, const Aabb& bounds)
 // its centre (reach 1: into its sphere).
 std::vector<std::uint8_t> particlesNearMeshes(const std::vector<OccluderBox>& meshes, const ParticleSet& particles, double reach);
 
+// Whether the box spans the medium's `bounds` across its two longest axes (as the axis-aligned box
+// around it), as a ground or a wall through the medium does: seen from one side only, it cuts the
+// particles it enters without lighting their visible part unevenly, as a wing inside a cloud does.
+bool boxSpansMedium(const OccluderBox& box, const Aabb& bounds);
+
 // Per particle (1/0): whether one of the point or spot lights `lamps` (indices into `lights`; −1
 // ends the list) lies within `reach` radii of its centre, where its 1/d² changes across the
 // particle faster than a fit over the billboard follows, or whether a spot's cone edge (from the
