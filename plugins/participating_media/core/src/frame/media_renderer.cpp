@@ -234,8 +234,11 @@ void MediaRenderer::planSliceViews(const GraphFrame& context, std::vector<glm::i
             view.depthFar = static_cast<float>(estimate.depthFar);
             int own = 0;  // the array's
             if (detail > 0.0f) {
-                resolution = std::max(resolution, sliceResolutionFor(estimate, view, detail));
-                if (view.perspective) own = sliceResolutionFor(estimate, view, detail, kMinLampSliceResolution);
+                // A lamp's views keep the base detail near meshes: its light there is per fragment,
+                // with its own mesh shadows, and six finer faces cost the slices most.
+                const float viewDetail = view.perspective ? settings_.sliceTexelsPerRadius : detail;
+                resolution = std::max(resolution, sliceResolutionFor(estimate, view, viewDetail));
+                if (view.perspective) own = sliceResolutionFor(estimate, view, viewDetail, kMinLampSliceResolution);
             }
             add(view, slices, own);
             // The crop follows its whole view, the light's second (light_transmittance.glsl).

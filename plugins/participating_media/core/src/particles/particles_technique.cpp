@@ -159,7 +159,9 @@ private:
         std::vector<std::uint8_t> flags = splatFlags(nearMesh, *frame.particles, context.host.lights, lamps);
         if (context.host.occludersComplete && shared.target.size == glm::ivec2(v.width, v.height))
             addClearOfMeshes(flags, context.host.occluders, *frame.particles, v);
-        if (own.cutLighting != CutLighting::Off && !constant && !context.host.occluders.empty())
+        // Not with a point or spot light: the exact program would take its near field for every
+        // fragment of those particles (campfire balanced 99 -> 141 ms at 1280x720, 11 particles).
+        if (own.cutLighting != CutLighting::Off && !constant && !lampRuns && !context.host.occluders.empty())
             addMeshInside(flags, context.host.occluders, *frame.particles);
         const long long inside = std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) { return (f & kSplatMeshInside) != 0; });
         frame.report("exact_lighting", false);
