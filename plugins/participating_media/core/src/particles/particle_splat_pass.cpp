@@ -1,6 +1,8 @@
 // Fast particles: the billboards of `particles` mode in the same back-to-front order, with the
 // source per vertex from the lighting pass and per fragment only the kernel's opacity from the
 // pre-integrated table (shaders/media/particle_splats.*). Blends exactly as ParticlePass does.
+// The particles a mesh lies inside (cut_lighting) are drawn in the same order with the exact
+// tier's program (particles.* with PARTICLE_SPLAT_RUN).
 #include "particles/particle_splat_pass.h"
 
 #include "common/kernel_table.h"
