@@ -36,14 +36,15 @@ const SettingField<ParticlesSettings> kParticlesFields[] = {
       .showsWith = "a point or spot light inside the medium"},
      &setBoolean<&ParticlesSettings::exactNearLamps>, &perParticleLighting},
     {{.key = "cut_lighting",
-      .help = "with per-particle lighting, the particles a mesh's box enters: lit per fragment as the exact tier lights "
-              "them, over the whole particle or only on the rays a surface may cut inside it (where the scene depth is a "
-              "depth test; the fit elsewhere), or by the fit, which carries light across the mesh",
+      .help = "with per-particle lighting, the particles a mesh's box enters (not a box that spans the medium, such as a "
+              "ground): lit per fragment as the exact tier lights them, over the whole particle or only on the rays a "
+              "surface may cut inside it (where the scene depth is a depth test; the fit elsewhere), or by the fit, which "
+              "carries light across the mesh",
       .type = SettingType::Choice,
       .words = {"particles", "rays", "off"},
       .defaultValue = "particles (fast: off)",
       .actsWhen = "with lighting=particle or particle_exact",
-      .showsWith = "a mesh inside the medium"},
+      .showsWith = "a mesh inside the medium, in a frame without a point or spot light"},
      &setChoice<&ParticlesSettings::cutLighting>, &perParticleLighting},
     // The two below are the per-fragment pass's; frames exact_near_lamps shades per fragment keep
     // their defaults.
@@ -83,8 +84,8 @@ std::vector<std::uint8_t> splatFlags(const std::vector<std::uint8_t>& nearMesh, 
 // box that spans the medium (a ground): it clips them as the fit's kernel table does, and lights
 // what is seen of them evenly, and it would take most of a low cloud (cloud.gltf 379 of 500
 // particles, its balanced frame 4.8 times as long).
-void addMeshInside(std::vector<std::uint8_t>& flags, const std::vector<OccluderBox>& meshes, const ParticleSet& particles) {
-    const Aabb bounds = particleBounds(particles);
+void addMeshInside(std::vector<std::uint8_t>& flags, const std::vector<OccluderBox>& meshes, const ParticleSet& particles,
+                   const Aabb& bounds) {
     std::vector<OccluderBox> within;
     std::copy_if(meshes.begin(), meshes.end(), std::back_inserter(within), [&](const OccluderBox& box) { return !boxSpansMedium(box, bounds); });
     const std::vector<std::uint8_t> inside = particlesNearMeshes(within, particles, 1.0);
@@ -162,7 +163,7 @@ private:
         // Not with a point or spot light: the exact program would take its near field for every
         // fragment of those particles (campfire balanced 99 -> 141 ms at 1280x720, 11 particles).
         if (own.cutLighting != CutLighting::Off && !constant && !lampRuns && !context.host.occluders.empty())
-            addMeshInside(flags, context.host.occluders, *frame.particles);
+            addMeshInside(flags, context.host.occluders, *frame.particles, shared.bounds);
         const long long inside = std::count_if(flags.begin(), flags.end(), [](std::uint8_t f) { return (f & kSplatMeshInside) != 0; });
         frame.report("exact_lighting", false);
         frame.report("constant_source", constant);
