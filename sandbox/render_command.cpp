@@ -1,10 +1,12 @@
 // sandbox render SCENE [--out F] [--size WxH] [--mode M] [--quality Q] [--budget-ms B] [--time T] [--camera NAME|INDEX] [--set K=V]...
-//                      [--stats F.json] [--frames N] [--orbit DEG] [--exposure E] [--tonemap none|filmic]
+//                      [--stats F.json] [--frames N] [--orbit DEG] [--animate] [--exposure E] [--tonemap none|filmic]
 // Renders the scene headless (EGL) with the real-time renderer. With --stats it measures: the
 // median frame time over N (≥ 20) GPU-synchronised frames after warm-up, and per-pass medians over
 // another N frames timed pass by pass (synchronising each pass inflates the total, so the two are
 // measured separately). With --orbit the camera turns between frames, so what a still camera
-// reads again (blocks' impostor_reuse) is timed as a moving one sees it.
+// reads again (blocks' impostor_reuse) is timed as a moving one sees it; with --animate the scene's
+// simulation steps before each frame, so what a moving medium costs (the multiple model's grid
+// solved again) is timed as a game pays it.
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -44,6 +46,7 @@ struct RenderOptions {
     std::string stats;
     std::string frames = "20";
     std::string orbit = "0";
+    bool animate = false;
     std::string exposure = "1";
     std::string tonemap = "none";
     bool floor = false;
@@ -104,31 +107,41 @@ private:
     int step_ = 0;
 };
 
+// One frame of the timed loops: the scene's simulation stepped first with --animate (app.update()
+// runs every phase), else the same state drawn again.
+void nextFrame(ecs::App& app, Orbit& orbit, bool animate) {
+    orbit.next();
+    if (animate)
+        app.update();
+    else
+        app.redraw();
+}
+
+// The multiple model's grid solve this frame, in CPU ms (0: kept, or no media).
+double scatteringSolveMs(ecs::App& app) {
+    const auto* media = app.world().tryResource<media::ecs::MediaRendererState>();
+    return media != nullptr && media->renderer ? media->renderer->stats().scatteringSolveMs : 0.0;
+}
+
 // The median frame over `frames` GPU-synchronised frames after a warm-up, then per-pass medians over
 // as many more, each pass synchronised (which inflates the total, so the two are measured apart).
-void measureFrames(ecs::App& app, int frames, double orbitDegrees, nlohmann::json& stats) {
+void measureFrames(ecs::App& app, int frames, double orbitDegrees, bool animate, nlohmann::json& stats) {
     using Clock = std::chrono::steady_clock;
     Orbit orbit(app, orbitDegrees);
-    for (int i = 0; i < 3; ++i) {  // warm-up: shader compiles, pool fills
-        orbit.next();
-        app.redraw();
-    }
-    std::vector<double> ms;
+    for (int i = 0; i < 3; ++i) nextFrame(app, orbit, animate);  // warm-up: shader compiles, pool fills
+    std::vector<double> ms, solveMs;
     for (int i = 0; i < frames; ++i) {
-        orbit.next();
         glFinish();
         const auto start = Clock::now();
-        app.redraw();
+        nextFrame(app, orbit, animate);
         glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        solveMs.push_back(scatteringSolveMs(app));
     }
     auto& request = app.resource<render::RenderRequest>();
     gpu::GlPassTimer timer;
     request.timer = &timer;
-    for (int i = 0; i < frames; ++i) {
-        orbit.next();
-        app.redraw();
-    }
+    for (int i = 0; i < frames; ++i) nextFrame(app, orbit, animate);
     request.timer = nullptr;
     nlohmann::json passes = nlohmann::json::object();
     for (const auto& [name, samples] : timer.samples()) passes[name] = gpu::median(samples);
@@ -138,6 +151,9 @@ void measureFrames(ecs::App& app, int frames, double orbitDegrees, nlohmann::jso
     stats["frame_ms_mean"] = std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size());
     stats["frames"] = frames;
     if (orbitDegrees > 0.0) stats["orbit_deg_per_frame"] = orbitDegrees;
+    stats["animate"] = animate;
+    // On the CPU, inside frame_ms: 0 for a still medium, whose grid the first frame solved.
+    stats["media_scattering_solve_ms"] = gpu::median(solveMs);
     stats["passes_ms"] = passes;
 }
 
@@ -212,7 +228,7 @@ int run(const RenderOptions& o) {
         stats["chosen"] = choice.rung;
     }
     app.redraw();
-    if (!o.stats.empty()) measureFrames(app, v.frames, v.orbit, stats);
+    if (!o.stats.empty()) measureFrames(app, v.frames, v.orbit, o.animate, stats);
     auto& state = app.resource<render::RendererState>();
     const assets::RgbImage image = state.renderer->readOutput();
     if (o.floor) {  // right after the timed frames, in the same process: the scene's fixed yardstick
@@ -260,6 +276,11 @@ CommandRunner addRenderCommand(CLI::App& app) {
     cmd->add_option("--orbit", options->orbit,
                     "with --stats: degrees the camera turns before each frame about the vertical axis through the medium's centre "
                     "(what a still camera reads again is timed as a moving one sees it); the image written is the last frame's")
+        ->needs(cmd->get_option("--stats"));
+    cmd->add_flag("--animate", options->animate,
+                  "with --stats: step the scene's simulation (1/60 s) before each frame, so what a moving medium costs is timed "
+                  "(the multiple model's grid solved again: media_scattering_solve_ms); the image written is the last frame's, "
+                  "at the time the stats give")
         ->needs(cmd->get_option("--stats"));
     cmd->add_option("--exposure", options->exposure, "PNG exposure multiplier, a finite number > 0")->capture_default_str();
     cmd->add_option("--tonemap", options->tonemap, "PNG tone curve after the exposure: none (clip at 1) or filmic (ACES fit); EXR stays linear")

@@ -10,6 +10,7 @@ kept as they are.
 """
 import glob
 import json
+import statistics
 import math
 import os
 import platform
@@ -250,6 +251,7 @@ def main(bench_dir, docs_dir):
                           b.get("particles", 0), b.get("seconds", 0), os.cpu_count() or 0, b.get("evaluations_per_pixel", 0),
                           b.get("unconverged_pixels", 0)), ""]
     lines += raymarch_section(bench_dir)
+    lines += animated_section(bench_dir)
     lines += editor_section(bench_dir)
     lines += kept_sections(docs_dir, lines)
     open(os.path.join(docs_dir, "PERFORMANCE.md"), "w").write("\n".join(lines))
@@ -441,6 +443,37 @@ def raymarch_section(bench_dir):
     return lines + [""]
 
 
+ANIMATED_HEADING = "## An animated frame"
+
+
+def animated_section(bench_dir):
+    """scripts/bench-animated's runs: the fast tier's frame with the medium moving, per model, and still."""
+    folder = os.path.join(bench_dir, "animated")
+    if not os.path.isdir(folder):
+        return []
+    lines = [ANIMATED_HEADING, "",
+             "`scripts/bench-animated`: the content scenes whose medium moves, fast tier at 1280×720, `sandbox render --stats "
+             "--animate` (the simulation steps 1/60 s before each frame), in turn with the single model and the still frame, 3 "
+             "rounds, medians. A moving medium pays its simulation step and upload, and in the multiple model its grid solved "
+             "again on the CPU (`media_scattering_solve_ms`, inside the frame; a still medium keeps the first frame's). The "
+             "benchmarks above time still frames.", "",
+             "| scene | multiple, moving (ms) | of it, the grid's solve (ms) | single, moving (ms) | multiple, still (ms) | "
+             "moving multiple / moving single |", "|---|---:|---:|---:|---:|---:|"]
+    for scene in ("smoke", "steam", "explosion", "campfire", "jet"):
+        runs = {}
+        for name in ("multiple", "single", "still"):
+            paths = sorted(glob.glob(os.path.join(folder, "%s_%s_*.json" % (scene, name))))
+            if paths:
+                runs[name] = [json.load(open(p)) for p in paths]
+        if len(runs) < 3:
+            continue
+        med = lambda name, key: statistics.median(r.get(key, 0.0) for r in runs[name])
+        lines.append("| %s | %.1f | %.1f | %.1f | %.1f | %.2f× |" % (
+            scene, med("multiple", "frame_ms"), med("multiple", "media_scattering_solve_ms"), med("single", "frame_ms"),
+            med("still", "frame_ms"), med("multiple", "frame_ms") / med("single", "frame_ms")))
+    return lines + [""]
+
+
 def replace_section(docs_dir, heading, section):
     """Rewrites one section of an existing PERFORMANCE.md in place (appended if it is new)."""
     path = os.path.join(docs_dir, "PERFORMANCE.md")
@@ -460,6 +493,8 @@ if __name__ == "__main__":
         replace_section(sys.argv[3], EDITOR_HEADING, editor_section(sys.argv[2]))
     elif sys.argv[1] == "--raymarch":
         replace_section(sys.argv[3], RAYMARCH_HEADING, raymarch_section(sys.argv[2]))
+    elif sys.argv[1] == "--animated":
+        replace_section(sys.argv[3], ANIMATED_HEADING, animated_section(sys.argv[2]))
     elif sys.argv[1] == "--multiple":
         replace_section(sys.argv[3], MULTIPLE_HEADING, multiple_section(sys.argv[2], sys.argv[3]))
     elif sys.argv[1] == "--sweeps":

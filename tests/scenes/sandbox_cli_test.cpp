@@ -211,6 +211,7 @@ TEST(SandboxRender, RefusesBadArgumentsWithAReason) {
         {{"render", box, "--budget-ms", "NaN"}, "--budget-ms", false},
         {{"render", box, "--budget-ms", "-5"}, "--budget-ms", false},
         {{"render", box, "--budget-ms", "abc"}, "--budget-ms", false},
+        {{"render", box, "--animate"}, "--stats", true},
         {{}, "subcommand", true},
     };
     for (const Case& c : cases) {
@@ -278,6 +279,32 @@ TEST(SandboxRender, QualityIsReportedInTheStats) {
         const nlohmann::json stats = nlohmann::json::parse(in);
         EXPECT_EQ(stats.at("quality").get<std::string>(), quality);
         EXPECT_EQ(stats.at("media_exact_lighting").get<bool>(), std::string(quality) == "exact") << quality;
+    }
+}
+
+// --animate steps the simulation before each timed frame, so a moving medium's costs are in the
+// frame: the multiple model's grid is solved again every frame (its CPU time reported), where a
+// still frame keeps the first frame's answer.
+TEST(SandboxRender, AnimateStepsTheSimulationAndSolvesTheGridEachFrame) {
+    TempFolder out;
+    for (const bool animate : {false, true}) {
+        const fs::path json = out / "stats.json";
+        std::vector<std::string> args{"render", (kContent / "scenes/smoke.gltf").string(), "--time", "2", "--size", "48x27",
+                                      "--quality", "fast", "--stats", json.string(), "--out", (out / "a.png").string()};
+        if (animate) args.push_back("--animate");
+        const ProcessResult r = sandbox(args);
+        ASSERT_EQ(r.exitCode, 0) << explain(r);
+        std::ifstream in(json);
+        const nlohmann::json stats = nlohmann::json::parse(in);
+        EXPECT_EQ(stats.at("animate").get<bool>(), animate);
+        EXPECT_TRUE(stats.at("media_multiple_scattering").get<bool>());
+        const int frames = stats.at("frames").get<int>();
+        // Three warm-up frames and two timed loops, a 1/60 s step before each.
+        EXPECT_NEAR(stats.at("time").get<double>(), 2.0 + (animate ? (3 + 2 * frames) / 60.0 : 0.0), 1e-6);
+        if (animate)
+            EXPECT_GT(stats.at("media_scattering_solve_ms").get<double>(), 0.0);
+        else
+            EXPECT_EQ(stats.at("media_scattering_solve_ms").get<double>(), 0.0);
     }
 }
 

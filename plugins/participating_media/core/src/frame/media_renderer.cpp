@@ -1,6 +1,7 @@
 #include "nimbus/media/media_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "common/frame_blocks.h"
@@ -275,9 +276,11 @@ void MediaRenderer::planScattering(GraphFrame& context) {
         shared.blocks->packScattering({}, 0, 0);
         return;
     }
+    const auto start = std::chrono::steady_clock::now();
     solveEnvironmentGrid(*particles_, *volumes_, {.lights = &context.host.lights, .ambient = context.host.ambient, .meshes = &context.host.occluders},
                          settings_.scatteringVoxels, {.maxSweeps = settings_.scatteringSweeps}, shared.environment);
     const EnvironmentGrid& grid = shared.environment;
+    if (grid.sweeps > 0) stats_.scatteringSolveMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     for (gpu::Texture* texture : {&shared.environmentTexture, &shared.directionalTexture}) {
         if (*texture && texture->desc().width == grid.size.x && texture->desc().height == grid.size.y && texture->desc().depth == grid.size.z)
             continue;

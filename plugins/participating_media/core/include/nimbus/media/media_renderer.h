@@ -39,6 +39,7 @@ struct MediaFrameStats {
     std::string mode;          // the technique that drew the frame
     bool multipleScattering = false;  // the multiple model's grid was read (not: single, or negligible)
     float rescatter = 0.0f;    // the multiple model: the share of first-scattered light that scatters again ("negligible" below 1%)
+    double scatteringSolveMs = 0.0;  // the multiple model: CPU time of its grid's solve this frame (0: the last frame's answer kept)
     std::vector<TechniqueStat> technique;  // what it reported (TechniqueStat)
     // A technique's figure as a number (a bool as 0 or 1); `fallback` when it reported none.
     double value(const std::string& key, double fallback = 0.0) const;
