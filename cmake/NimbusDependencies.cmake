@@ -11,6 +11,8 @@ find_package(OpenImageIO CONFIG REQUIRED)
 find_package(embree 3 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+# The media plugin's multiple-scattering grid runs its loops on TBB (also OpenVDB's dependency).
+find_package(TBB CONFIG REQUIRED)
 # Debian's libopenvdb-dev ships a find module (no config file) in a folder of its own; it also
 # needs Boost.Iostreams, TBB and Blosc (bootstrap installs them).
 list(APPEND CMAKE_MODULE_PATH "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/OpenVDB")

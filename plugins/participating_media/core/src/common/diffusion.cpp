@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "common/grid_slabs.h"
+
 namespace nimbus::media {
 namespace {
 
@@ -46,7 +48,7 @@ System buildSystem(const MediumGrid& m) {
         if (s.medium[v]) D[v] = diffusivity(m, v);
     }
     const float h = static_cast<float>(m.voxel);
-    for (int z = 0; z < m.size.z; ++z)
+    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const std::size_t v = m.index(x, y, z);
@@ -67,14 +69,17 @@ System buildSystem(const MediumGrid& m) {
                 }
                 s.diagonal[v] = diagonal;
             }
+    });
     return s;
 }
 
-// One red or black half-sweep; returns the largest change.
-float halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& phi, int parity) {
-    float largest = 0.0f;
+// One red or black half-sweep; returns the largest change (x) and the largest fluence it leaves in
+// the voxels of its colour (y). A voxel of one colour reads only the other colour's, so the slabs
+// run in parallel (grid_slabs.h).
+glm::vec2 halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& phi, int parity) {
     const long strides[3] = {1, static_cast<long>(m.size.x), static_cast<long>(m.size.x) * m.size.y};  // along x, y, z
-    for (int z = 0; z < m.size.z; ++z)
+    return largestOverSlabs(m.size.z, strides[2], glm::vec2(0.0f), [&](int z) {
+        float change = 0.0f, largest = 0.0f;
         for (int y = 0; y < m.size.y; ++y)
             for (int x = (y + z + parity) & 1; x < m.size.x; x += 2) {
                 const std::size_t v = m.index(x, y, z);
@@ -88,10 +93,12 @@ float halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec
                 }
                 const glm::vec3 next = glm::max(glm::mix(phi[v], sum / s.diagonal[v], kOverRelaxation), glm::vec3(0.0f));
                 const glm::vec3 d = glm::abs(next - phi[v]);
-                largest = std::max({largest, d.x, d.y, d.z});
+                change = std::max({change, d.x, d.y, d.z});
+                largest = std::max({largest, next.x, next.y, next.z});
                 phi[v] = next;
             }
-    return largest;
+        return glm::vec2(change, largest);
+    });
 }
 
 }  // namespace
@@ -103,7 +110,7 @@ std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm:
         return glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) && glm::all(glm::lessThan(q, m.size)) &&
                m.sigma[m.index(q.x, q.y, q.z)] * m.voxel > kEmptyDepth;
     };
-    for (int z = 0; z < m.size.z; ++z)
+    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const glm::ivec3 at(x, y, z);
@@ -133,6 +140,7 @@ std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm:
                 }
                 flux[v] = -D * gradient;
             }
+    });
     return flux;
 }
 
@@ -144,10 +152,10 @@ int solveDiffusion(const MediumGrid& medium, const std::vector<glm::vec3>& sourc
     int sweeps = 0;
     while (sweeps < solve.maxSweeps) {
         ++sweeps;
-        const float change = std::max(halfSweep(medium, system, source, fluence, 0), halfSweep(medium, system, source, fluence, 1));
-        float largest = 0.0f;
-        for (const glm::vec3& f : fluence) largest = std::max({largest, f.x, f.y, f.z});
-        if (!(change > solve.tolerance * largest)) break;
+        // Each voxel changes in one half-sweep only, so the two halves' largest fluence is the grid's
+        // (voxels without medium hold 0).
+        const glm::vec2 sweep = glm::max(halfSweep(medium, system, source, fluence, 0), halfSweep(medium, system, source, fluence, 1));
+        if (!(sweep.x > solve.tolerance * sweep.y)) break;
     }
     return sweeps;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/grid_slabs.h"
 #include "nimbus/media/optics.h"
 
 namespace nimbus::media {
@@ -176,24 +177,30 @@ struct EnvironmentTransmittance {
     std::vector<glm::vec3> moment;
 };
 EnvironmentTransmittance environmentTransmittance(const MediumGrid& m, const std::vector<OccluderBox>& meshes) {
-    EnvironmentTransmittance out{std::vector<float>(m.count(), 0.0f), std::vector<glm::vec3>(m.count(), glm::vec3(0.0f))};
+    std::vector<glm::ivec3> steps;  // in the order each voxel sums their shares
     for (int z = -1; z <= 1; ++z)
         for (int y = -1; y <= 1; ++y)
-            for (int x = -1; x <= 1; ++x) {
-                if (!(std::abs(x) + std::abs(y) + std::abs(z) == 1 || (x != 0 && y != 0 && z != 0))) continue;
-                const glm::ivec3 s(x, y, z);
-                const std::vector<float> tau = sweep(m, s);
-                const glm::dvec3 d = glm::normalize(glm::dvec3(s));
-                for (int k = 0; k < m.size.z; ++k)
-                    for (int j = 0; j < m.size.y; ++j)
-                        for (int i = 0; i < m.size.x; ++i) {
-                            const std::size_t v = m.index(i, j, k);
-                            if (!meshes.empty() && meetsMesh(m.min + (glm::dvec3(i, j, k) + 0.5) * m.voxel, d, meshes)) continue;
-                            const float t = std::exp(-tau[v]) / 14.0f;
-                            out.mean[v] += t;
-                            out.moment[v] += t * glm::vec3(d);
-                        }
+            for (int x = -1; x <= 1; ++x)
+                if (std::abs(x) + std::abs(y) + std::abs(z) == 1 || (x != 0 && y != 0 && z != 0)) steps.emplace_back(x, y, z);
+    std::vector<glm::dvec3> directions;
+    for (const glm::ivec3& step : steps) directions.push_back(glm::normalize(glm::dvec3(step)));
+    std::vector<std::vector<float>> tau(steps.size());
+    tbb::parallel_for(std::size_t(0), steps.size(), [&](std::size_t s) { tau[s] = sweep(m, steps[s]); });
+    EnvironmentTransmittance out{std::vector<float>(m.count(), 0.0f), std::vector<glm::vec3>(m.count(), glm::vec3(0.0f))};
+    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int k) {
+        for (int j = 0; j < m.size.y; ++j)
+            for (int i = 0; i < m.size.x; ++i) {
+                const std::size_t v = m.index(i, j, k);
+                const glm::dvec3 p = m.min + (glm::dvec3(i, j, k) + 0.5) * m.voxel;
+                for (std::size_t s = 0; s < steps.size(); ++s) {
+                    const glm::dvec3& d = directions[s];
+                    if (!meshes.empty() && meetsMesh(p, d, meshes)) continue;
+                    const float t = std::exp(-tau[s][v]) / 14.0f;
+                    out.mean[v] += t;
+                    out.moment[v] += t * glm::vec3(d);
+                }
             }
+    });
     return out;
 }
 
@@ -217,7 +224,7 @@ std::vector<glm::vec3> firstScattering(const MediumGrid& original, const Environ
     const MediumGrid& m = scaled;
     static const std::vector<OccluderBox> kNoMeshes;
     const std::vector<OccluderBox>& meshes = lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes;
-    for (int z = 0; z < m.size.z; ++z)
+    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const std::size_t v = m.index(x, y, z);
@@ -237,6 +244,7 @@ std::vector<glm::vec3> firstScattering(const MediumGrid& original, const Environ
                     }
                 source[v] = keep[v] * m.scattering[v] * arriving + 4.0f * static_cast<float>(kPi) * m.emission[v];  // emission: all directions
             }
+    });
     return source;
 }
 
@@ -245,11 +253,24 @@ std::vector<glm::vec3> firstScattering(const MediumGrid& original, const Environ
 // scattered light rather than a ramp to the empty voxel's zero.
 std::vector<glm::vec3> dilated(const MediumGrid& m, const std::vector<glm::vec3>& phi) {
     std::vector<glm::vec3> out = phi;
+    // Per voxel, whether it or a neighbour along x holds light: most empty voxels have none of the
+    // 27 around them, and the 9 rows' flags tell it without the mean.
+    std::vector<char> nearX(phi.size(), 0);
     for (int z = 0; z < m.size.z; ++z)
+        for (int y = 0; y < m.size.y; ++y)
+            for (int x = 0; x < m.size.x; ++x) {
+                if (phi[m.index(x, y, z)] == glm::vec3(0.0f)) continue;
+                for (int dx = std::max(x - 1, 0); dx <= std::min(x + 1, m.size.x - 1); ++dx) nearX[m.index(dx, y, z)] = 1;
+            }
+    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const std::size_t v = m.index(x, y, z);
                 if (phi[v] != glm::vec3(0.0f)) continue;
+                bool any = false;
+                for (int dz = std::max(z - 1, 0); dz <= std::min(z + 1, m.size.z - 1) && !any; ++dz)
+                    for (int dy = std::max(y - 1, 0); dy <= std::min(y + 1, m.size.y - 1) && !any; ++dy) any = nearX[m.index(x, dy, dz)] != 0;
+                if (!any) continue;
                 glm::vec3 sum(0.0f);
                 int count = 0;
                 for (int c = 0; c < 27; ++c) {
@@ -262,6 +283,7 @@ std::vector<glm::vec3> dilated(const MediumGrid& m, const std::vector<glm::vec3>
                 }
                 if (count > 0) out[v] = sum / static_cast<float>(count);
             }
+    });
     return out;
 }
 
@@ -273,15 +295,18 @@ std::vector<glm::vec4> directionalTexels(const MediumGrid& m, const glm::vec3& a
     const float inv4Pi = 1.0f / (4.0f * static_cast<float>(kPi));
     std::vector<glm::vec3> a(m.count(), glm::vec3(0.0f));
     std::vector<glm::vec3> weight(m.count(), glm::vec3(0.0f));
-    for (std::size_t v = 0; v < m.count(); ++v) {
-        const float base = ambientLuminance * environment.mean[v] + glm::dot(radiance[v], kLuminanceWeights) * inv4Pi;
-        if (!(base > 0.0f) || !(m.sigma[v] > 0.0f)) continue;
-        const glm::vec3 p1 = (3.0f * inv4Pi * flux[v] - 3.0f * ambientLuminance * environment.moment[v]) / base;
-        // A radiance x(1 + a·ω) is negative somewhere where |a| > 1, as P1 gives at a lit rim where the
-        // light is far from linear in direction: |a| is kept at most 1.
-        a[v] = p1 / std::max(1.0f, glm::length(p1));
-        weight[v] = glm::vec3(1.0f);
-    }
+    const std::size_t slab = static_cast<std::size_t>(m.size.x) * static_cast<std::size_t>(m.size.y);
+    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
+        for (std::size_t v = static_cast<std::size_t>(z) * slab; v < (static_cast<std::size_t>(z) + 1) * slab; ++v) {
+            const float base = ambientLuminance * environment.mean[v] + glm::dot(radiance[v], kLuminanceWeights) * inv4Pi;
+            if (!(base > 0.0f) || !(m.sigma[v] > 0.0f)) continue;
+            const glm::vec3 p1 = (3.0f * inv4Pi * flux[v] - 3.0f * ambientLuminance * environment.moment[v]) / base;
+            // A radiance x(1 + a·ω) is negative somewhere where |a| > 1, as P1 gives at a lit rim where the
+            // light is far from linear in direction: |a| is kept at most 1.
+            a[v] = p1 / std::max(1.0f, glm::length(p1));
+            weight[v] = glm::vec3(1.0f);
+        }
+    });
     const std::vector<glm::vec3> spread = dilated(m, a), count = dilated(m, weight);
     std::vector<glm::vec4> out(m.count(), glm::vec4(0.0f));
     for (std::size_t v = 0; v < m.count(); ++v)
@@ -339,6 +364,44 @@ std::vector<double> inputKey(const ParticleSet& particles, const std::vector<Vol
     return key;
 }
 
+// What every level of the solve makes: the grid's frame, its environment transmittance, the first
+// scattering and the fluence solved from it (started from `solve.coarser`'s where given).
+struct Level {
+    EnvironmentTransmittance environment;
+    std::vector<glm::vec3> source;
+};
+Level solveLevel(const MediumGrid& medium, const EnvironmentLighting& lighting, const DiffusionSolve& solve, EnvironmentGrid& grid) {
+    static const std::vector<OccluderBox> kNoMeshes;
+    Level level;
+    if (medium.count() > 0) {
+        level.environment = environmentTransmittance(medium, lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes);
+        level.source = firstScattering(medium, lighting, level.environment.mean);
+    }
+    grid.sweeps = 0;
+    grid.rescatter = 0.0f;
+    grid.size = medium.size;
+    grid.min = medium.min;
+    grid.voxel = glm::dvec3(medium.voxel);
+    grid.texels.clear();
+    grid.directional.clear();
+    grid.fluence = solve.coarser != nullptr ? resampled(*solve.coarser, medium) : std::vector<glm::vec3>{};
+    if (medium.count() > 0) grid.sweeps = solveDiffusion(medium, level.source, grid.fluence, solve);
+    return level;
+}
+
+// The fluence alone on a grid of `voxels` along the longest side, its solve started from a grid of
+// half as many (down to 4): the diffusion's long wavelengths converge on a coarser grid first. A
+// finer level reads nothing else of it, so nothing else is built.
+void solveCoarser(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting, int voxels,
+                  DiffusionSolve solve, EnvironmentGrid& level) {
+    EnvironmentGrid coarser;
+    if (voxels >= 8) {
+        solveCoarser(particles, volumes, lighting, voxels / 2, solve, coarser);
+        solve.coarser = &coarser;
+    }
+    solveLevel(voxelizeMedium(particles, volumes, voxels), lighting, solve, level);
+}
+
 }  // namespace
 
 void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting,
@@ -350,9 +413,8 @@ void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume
     }
     EnvironmentGrid coarse;
     if (voxelsAlongLongest >= 8) {
-        // The diffusion's long wavelengths converge on a coarser grid first. Never from the last
-        // frame's answer: a frame's picture depends on that frame alone.
-        solveEnvironmentGrid(particles, volumes, lighting, voxelsAlongLongest / 2, solve, coarse);
+        // Never from the last frame's answer: a frame's picture depends on that frame alone.
+        solveCoarser(particles, volumes, lighting, voxelsAlongLongest / 2, solve, coarse);
         solve.coarser = &coarse;
     }
     buildEnvironmentGrid(voxelizeMedium(particles, volumes, voxelsAlongLongest), lighting, solve, grid);
@@ -393,25 +455,15 @@ MediumGrid voxelizeMedium(const ParticleSet& particles, const std::vector<Volume
 }
 
 void buildEnvironmentGrid(const MediumGrid& medium, const EnvironmentLighting& lighting, const DiffusionSolve& solve, EnvironmentGrid& grid) {
-    static const std::vector<OccluderBox> kNoMeshes;
-    const EnvironmentTransmittance environment = medium.count() == 0 ? EnvironmentTransmittance{}
-                                                                      : environmentTransmittance(medium, lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes);
-    const std::vector<glm::vec3> source = medium.count() == 0 ? std::vector<glm::vec3>{} : firstScattering(medium, lighting, environment.mean);
-    grid.sweeps = 0;
-    grid.rescatter = 0.0f;
-    grid.size = medium.size;
-    grid.min = medium.min;
-    grid.voxel = glm::dvec3(medium.voxel);
-    grid.texels.clear();
-    grid.fluence = solve.coarser != nullptr ? resampled(*solve.coarser, medium) : std::vector<glm::vec3>{};
+    const Level level = solveLevel(medium, lighting, solve, grid);
     if (medium.count() == 0) return;
+    const EnvironmentTransmittance& environment = level.environment;
     const float inv4Pi = 1.0f / (4.0f * static_cast<float>(kPi));
-    grid.sweeps = solveDiffusion(medium, source, grid.fluence, solve);
     const std::vector<glm::vec3> radiance = dilated(medium, grid.fluence);
     double again = 0.0, first = 0.0;  // the first scattering's light, weighted by the chance it scatters again
     for (std::size_t v = 0; v < medium.count(); ++v)
         if (medium.sigma[v] > 0.0f) {
-                    const double q = glm::dot(source[v], kLuminanceWeights), albedo = glm::dot(medium.scattering[v], kLuminanceWeights) / medium.sigma[v];
+            const double q = glm::dot(level.source[v], kLuminanceWeights), albedo = glm::dot(medium.scattering[v], kLuminanceWeights) / medium.sigma[v];
             first += q;
             again += q * albedo * (1.0 - environment.mean[v]);
         }
