@@ -48,7 +48,7 @@ System buildSystem(const MediumGrid& m) {
         if (s.medium[v]) D[v] = diffusivity(m, v);
     }
     const float h = static_cast<float>(m.voxel);
-    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
+    forEachSlab(m.size, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const std::size_t v = m.index(x, y, z);
@@ -78,7 +78,7 @@ System buildSystem(const MediumGrid& m) {
 // run in parallel (grid_slabs.h).
 glm::vec2 halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& phi, int parity) {
     const long strides[3] = {1, static_cast<long>(m.size.x), static_cast<long>(m.size.x) * m.size.y};  // along x, y, z
-    return largestOverSlabs(m.size.z, strides[2], glm::vec2(0.0f), [&](int z) {
+    return largestOverSlabs(m.size, glm::vec2(0.0f), [&](int z) {
         float change = 0.0f, largest = 0.0f;
         for (int y = 0; y < m.size.y; ++y)
             for (int x = (y + z + parity) & 1; x < m.size.x; x += 2) {
@@ -110,7 +110,7 @@ std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm:
         return glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) && glm::all(glm::lessThan(q, m.size)) &&
                m.sigma[m.index(q.x, q.y, q.z)] * m.voxel > kEmptyDepth;
     };
-    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
+    forEachSlab(m.size, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const glm::ivec3 at(x, y, z);

@@ -187,7 +187,7 @@ EnvironmentTransmittance environmentTransmittance(const MediumGrid& m, const std
     std::vector<std::vector<float>> tau(steps.size());
     tbb::parallel_for(std::size_t(0), steps.size(), [&](std::size_t s) { tau[s] = sweep(m, steps[s]); });
     EnvironmentTransmittance out{std::vector<float>(m.count(), 0.0f), std::vector<glm::vec3>(m.count(), glm::vec3(0.0f))};
-    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int k) {
+    forEachSlab(m.size, [&](int k) {
         for (int j = 0; j < m.size.y; ++j)
             for (int i = 0; i < m.size.x; ++i) {
                 const std::size_t v = m.index(i, j, k);
@@ -224,7 +224,7 @@ std::vector<glm::vec3> firstScattering(const MediumGrid& original, const Environ
     const MediumGrid& m = scaled;
     static const std::vector<OccluderBox> kNoMeshes;
     const std::vector<OccluderBox>& meshes = lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes;
-    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
+    forEachSlab(m.size, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const std::size_t v = m.index(x, y, z);
@@ -262,7 +262,7 @@ std::vector<glm::vec3> dilated(const MediumGrid& m, const std::vector<glm::vec3>
                 if (phi[m.index(x, y, z)] == glm::vec3(0.0f)) continue;
                 for (int dx = std::max(x - 1, 0); dx <= std::min(x + 1, m.size.x - 1); ++dx) nearX[m.index(dx, y, z)] = 1;
             }
-    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
+    forEachSlab(m.size, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const std::size_t v = m.index(x, y, z);
@@ -295,8 +295,8 @@ std::vector<glm::vec4> directionalTexels(const MediumGrid& m, const glm::vec3& a
     const float inv4Pi = 1.0f / (4.0f * static_cast<float>(kPi));
     std::vector<glm::vec3> a(m.count(), glm::vec3(0.0f));
     std::vector<glm::vec3> weight(m.count(), glm::vec3(0.0f));
-    const std::size_t slab = static_cast<std::size_t>(m.size.x) * static_cast<std::size_t>(m.size.y);
-    forEachSlab(m.size.z, static_cast<long>(m.size.x) * m.size.y, [&](int z) {
+    const auto slab = static_cast<std::size_t>(slabVoxels(m.size));
+    forEachSlab(m.size, [&](int z) {
         for (std::size_t v = static_cast<std::size_t>(z) * slab; v < (static_cast<std::size_t>(z) + 1) * slab; ++v) {
             const float base = ambientLuminance * environment.mean[v] + glm::dot(radiance[v], kLuminanceWeights) * inv4Pi;
             if (!(base > 0.0f) || !(m.sigma[v] > 0.0f)) continue;

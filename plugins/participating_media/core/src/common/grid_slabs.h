@@ -8,6 +8,7 @@
 // Does not: choose the thread count (TBB's default arena: all cores, or what a host's
 // tbb::task_arena or tbb::global_control allows; docs/integration.md).
 #include <algorithm>
+#include <cstddef>
 
 #include <glm/glm.hpp>
 #include <tbb/blocked_range.h>
@@ -20,32 +21,38 @@ namespace nimbus::media {
 // its share (the coarse levels the diffusion starts from are a few hundred voxels).
 inline constexpr long kParallelVoxels = 4096;
 
-// slab(z) for every z in [0, slabs), in parallel; `slabVoxels`: the voxels of one slab.
+inline long slabVoxels(const glm::ivec3& size) { return static_cast<long>(size.x) * size.y; }
+inline bool onCallingThread(const glm::ivec3& size) { return slabVoxels(size) * size.z < kParallelVoxels; }
+// The z slabs of a grid of `size`, about a quarter of kParallelVoxels a task.
+inline tbb::blocked_range<int> slabRange(const glm::ivec3& size) {
+    const auto grain = static_cast<std::size_t>(std::max(1L, kParallelVoxels / 4 / std::max(slabVoxels(size), 1L)));
+    return tbb::blocked_range<int>(0, size.z, grain);
+}
+
+// slab(z) for every z slab of a grid of `size`, in parallel.
 template <class Slab>
-void forEachSlab(int slabs, long slabVoxels, const Slab& slab) {
-    if (static_cast<long>(slabs) * slabVoxels < kParallelVoxels) {
-        for (int z = 0; z < slabs; ++z) slab(z);
+void forEachSlab(const glm::ivec3& size, const Slab& slab) {
+    if (onCallingThread(size)) {
+        for (int z = 0; z < size.z; ++z) slab(z);
         return;
     }
-    const int grain = static_cast<int>(std::max(1L, kParallelVoxels / 4 / std::max(slabVoxels, 1L)));
-    tbb::parallel_for(tbb::blocked_range<int>(0, slabs, grain), [&](const tbb::blocked_range<int>& r) {
+    tbb::parallel_for(slabRange(size), [&](const tbb::blocked_range<int>& r) {
         for (int z = r.begin(); z != r.end(); ++z) slab(z);
     });
 }
 
-// The component-wise largest of slab(z) (a float or a glm vector) over every z in [0, slabs), from
-// `zero`, in parallel: a maximum is the same in any order.
+// The component-wise largest of slab(z) (a float or a glm vector) over every z slab of a grid of
+// `size`, from `zero`, in parallel: a maximum is the same in any order.
 template <class T, class Slab>
-T largestOverSlabs(int slabs, long slabVoxels, T zero, const Slab& slab) {
+T largestOverSlabs(const glm::ivec3& size, T zero, const Slab& slab) {
     auto larger = [](const T& a, const T& b) { return glm::max(a, b); };
-    if (static_cast<long>(slabs) * slabVoxels < kParallelVoxels) {
+    if (onCallingThread(size)) {
         T largest = zero;
-        for (int z = 0; z < slabs; ++z) largest = larger(largest, slab(z));
+        for (int z = 0; z < size.z; ++z) largest = larger(largest, slab(z));
         return largest;
     }
-    const int grain = static_cast<int>(std::max(1L, kParallelVoxels / 4 / std::max(slabVoxels, 1L)));
     return tbb::parallel_reduce(
-        tbb::blocked_range<int>(0, slabs, grain), zero,
+        slabRange(size), zero,
         [&](const tbb::blocked_range<int>& r, T largest) {
             for (int z = r.begin(); z != r.end(); ++z) largest = larger(largest, slab(z));
             return largest;
