@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <utility>
 #include <variant>
 
 #include <epoxy/gl.h>
@@ -117,10 +118,12 @@ void nextFrame(ecs::App& app, Orbit& orbit, bool animate) {
         app.redraw();
 }
 
-// The multiple model's grid solve this frame, in CPU ms (0: kept, or no media).
-double scatteringSolveMs(ecs::App& app) {
+// The multiple model's grid solve this frame: its CPU ms (0: kept, or no media) and whether it
+// started from the last frame's answer.
+std::pair<double, bool> scatteringSolve(ecs::App& app) {
     const auto* media = app.world().tryResource<media::ecs::MediaRendererState>();
-    return media != nullptr && media->renderer ? media->renderer->stats().scatteringSolveMs : 0.0;
+    if (media == nullptr || !media->renderer) return {0.0, false};
+    return {media->renderer->stats().scatteringSolveMs, media->renderer->stats().scatteringWarm};
 }
 
 // The median frame over `frames` GPU-synchronised frames after a warm-up, then per-pass medians over
@@ -130,13 +133,16 @@ void measureFrames(ecs::App& app, int frames, double orbitDegrees, bool animate,
     Orbit orbit(app, orbitDegrees);
     for (int i = 0; i < 3; ++i) nextFrame(app, orbit, animate);  // warm-up: shader compiles, pool fills
     std::vector<double> ms, solveMs;
+    int warmSolves = 0;
     for (int i = 0; i < frames; ++i) {
         glFinish();
         const auto start = Clock::now();
         nextFrame(app, orbit, animate);
         glFinish();
         ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        solveMs.push_back(scatteringSolveMs(app));
+        const auto [solve, warm] = scatteringSolve(app);
+        solveMs.push_back(solve);
+        warmSolves += warm ? 1 : 0;
     }
     auto& request = app.resource<render::RenderRequest>();
     gpu::GlPassTimer timer;
@@ -154,6 +160,7 @@ void measureFrames(ecs::App& app, int frames, double orbitDegrees, bool animate,
     stats["animate"] = animate;
     // On the CPU, inside frame_ms: 0 for a still medium, whose grid the first frame solved.
     stats["media_scattering_solve_ms"] = gpu::median(solveMs);
+    stats["media_scattering_warm_frames"] = warmSolves;  // of them, solved from the frame before's (scattering_warm_sweeps)
     stats["passes_ms"] = passes;
 }
 

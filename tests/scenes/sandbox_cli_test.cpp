@@ -305,7 +305,23 @@ TEST(SandboxRender, AnimateStepsTheSimulationAndSolvesTheGridEachFrame) {
             EXPECT_GT(stats.at("media_scattering_solve_ms").get<double>(), 0.0);
         else
             EXPECT_EQ(stats.at("media_scattering_solve_ms").get<double>(), 0.0);
+        EXPECT_EQ(stats.at("media_scattering_warm_frames").get<int>(), 0) << "a cold solve unless a host asks";
     }
+}
+
+// scattering_warm_sweeps: every timed frame of a moving plume starts its grid's solve from the
+// frame before's.
+TEST(SandboxRender, AWarmStartSolvesAMovingPlumeFromTheFrameBefore) {
+    TempFolder out;
+    const fs::path json = out / "stats.json";
+    const ProcessResult r = sandbox({"render", (kContent / "scenes/smoke.gltf").string(), "--time", "2", "--size", "48x27", "--quality", "fast",
+                                     "--animate", "--set", "scattering_warm_sweeps=16", "--stats", json.string(), "--out",
+                                     (out / "a.png").string()});
+    ASSERT_EQ(r.exitCode, 0) << explain(r);
+    std::ifstream in(json);
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    EXPECT_EQ(stats.at("media_scattering_warm_frames").get<int>(), stats.at("frames").get<int>());
+    EXPECT_GT(stats.at("media_scattering_solve_ms").get<double>(), 0.0);
 }
 
 // A lamp inside the medium: balanced keeps its splats (their near field takes the exact tier's

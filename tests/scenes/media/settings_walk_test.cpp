@@ -10,7 +10,8 @@
 // medium, a wing seen close, whose billboards are large enough for media_scale=auto to reduce, and
 // a campfire, whose point light casts the rocks' shadows. A key that shows only
 // after the camera moves (kShowsWithMovingCamera) is judged on a second frame, drawn after one
-// through the camera turned half a degree.
+// through the camera turned half a degree; one that shows only after the medium moves
+// (kShowsWithMovingMedium), on a second frame drawn after its clouds moved by a centimetre.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -90,6 +91,15 @@ bool sameImage(const assets::RgbImage& a, const assets::RgbImage& b) {
 // the declarations (EveryDeclaredModeIsWalked): they cannot be read while tests are registered.
 const std::vector<std::string> kWalkedModes{"particles", "blocks", "raymarch", "sheets", "billboards"};
 
+// What moves between the two frames of a key whose effect shows only then (SettingSpec::showsWith).
+enum class Motion { None, Camera, Medium };
+
+Motion motionOf(const SettingSpec& spec) {
+    if (spec.showsWith == kShowsWithMovingCamera) return Motion::Camera;
+    if (spec.showsWith == kShowsWithMovingMedium) return Motion::Medium;
+    return Motion::None;
+}
+
 class SettingsWalk : public GlSceneTest, public ::testing::WithParamInterface<std::string> {
 protected:
     // The frame of `scene` with `settings`, or the refusal's text.
@@ -99,8 +109,10 @@ protected:
         assets::RgbImage image;
     };
     // With `sessionOnly`, a session that is not refused is not rendered either (an empty image).
-    // With `moving`, the frame follows one through the camera turned by half a degree.
-    Outcome render(const WalkScene& scene, const std::vector<std::string>& settings, bool sessionOnly = false, bool moving = false) {
+    // With `motion`, the frame follows one through the camera turned by half a degree, or one
+    // before the clouds moved.
+    Outcome render(const WalkScene& scene, const std::vector<std::string>& settings, bool sessionOnly = false,
+                   Motion motion = Motion::None) {
         sandbox::SessionOptions options;
         options.settings = settings;
         Outcome out;
@@ -108,13 +120,19 @@ protected:
             auto session = std::make_unique<sandbox::Session>(scene.scene, options);
             if (sessionOnly) return out;
             if (previous_) session->adoptRenderers(*previous_);  // the programs compiled once
-            if (moving) {
-                ecs::World& world = session->app().world();
+            ecs::World& world = session->app().world();
+            if (motion == Motion::Camera) {
                 glm::dmat4& camera = world.get<scene::Transform>(nodeEntity(world, "main")).world;
                 const glm::dmat4 start = camera;
                 camera = glm::rotate(glm::dmat4(1.0), glm::radians(0.5), glm::dvec3(0.0, 1.0, 0.0)) * start;
                 (void)session->renderRealtime(kWidth, kHeight);
                 camera = start;
+            } else if (motion == Motion::Medium) {
+                (void)session->renderRealtime(kWidth, kHeight);
+                world.view<nimbus::media::ecs::ParticleCloud>().each([&](ecs::Entity e, const nimbus::media::ecs::ParticleCloud&) {
+                    glm::dmat4& node = world.get<scene::Transform>(e).world;
+                    node = glm::translate(glm::dmat4(1.0), glm::dvec3(0.01, 0.0, 0.0)) * node;
+                });
             }
             out.image = session->renderRealtime(kWidth, kHeight);
             previous_ = std::move(session);
@@ -139,7 +157,8 @@ TEST_P(SettingsWalk, EveryKeyInEveryTierChangesTheFrameOrIsRefused) {
     const std::string& mode = GetParam();
     for (const std::string& tier : qualitySpec->words) {
         const std::vector<std::string> base = {"mode=" + mode, "quality=" + tier};
-        std::vector<assets::RgbImage> baselines, movingBaselines;  // the latter made when a key first needs them
+        std::vector<assets::RgbImage> baselines;
+        std::map<Motion, std::vector<assets::RgbImage>> movingBaselines;  // made when a key first needs them
         for (const WalkScene& scene : scenes) {
             const Outcome b = render(scene, base);
             ASSERT_FALSE(b.refused) << b.reason;
@@ -154,15 +173,15 @@ TEST_P(SettingsWalk, EveryKeyInEveryTierChangesTheFrameOrIsRefused) {
             int refusals = 0, tries = 0;
             bool changed = false;
             std::string reason;
-            const bool moving = spec.showsWith == kShowsWithMovingCamera;
-            if (moving && movingBaselines.empty())
-                for (const WalkScene& scene : scenes) movingBaselines.push_back(render(scene, base, false, true).image);
+            const Motion motion = motionOf(spec);
+            if (motion != Motion::None && movingBaselines[motion].empty())
+                for (const WalkScene& scene : scenes) movingBaselines[motion].push_back(render(scene, base, false, motion).image);
             for (const std::string& value : candidates(spec)) {
                 std::vector<std::string> settings = base;
                 settings.push_back(spec.key + "=" + value);
                 const std::size_t shownIn = spec.showsWith.empty() ? 1 : scenes.size();
                 for (std::size_t s = 0; s < shownIn && !changed; ++s) {
-                    const Outcome o = render(scenes[s], settings, refusals > 0, moving);
+                    const Outcome o = render(scenes[s], settings, refusals > 0, motion);
                     ++tries;
                     if (o.refused) {
                         ++refusals;
@@ -171,7 +190,7 @@ TEST_P(SettingsWalk, EveryKeyInEveryTierChangesTheFrameOrIsRefused) {
                         EXPECT_NE(reason.find("no effect"), std::string::npos) << spec.key << "=" << value << ": " << reason;
                         EXPECT_NE(reason.find(spec.key), std::string::npos) << reason;
                     } else {
-                        changed = !sameImage(o.image, moving ? movingBaselines[s] : baselines[s]);
+                        changed = !sameImage(o.image, motion != Motion::None ? movingBaselines[motion][s] : baselines[s]);
                     }
                 }
                 if (changed) break;

@@ -57,5 +57,13 @@ TEST(MediaSettings, AKeySetExplicitlyWinsNearMeshesToo) {
     EXPECT_FLOAT_EQ(readWith({"mode=blocks", "quality=fast", "slice_resolution=auto"}).sliceTexelsPerRadiusNearMeshes, 4.0f);
 }
 
+// Starting a changed frame's grid solve from the last frame's answer is a host's choice: no tier
+// takes it (a frame's picture then depends on the frames before it), and a key set explicitly wins.
+TEST(MediaSettings, WarmStartingTheScatteringGridIsOptIn) {
+    for (const char* tier : {"quality=fast", "quality=balanced", "quality=exact"}) EXPECT_EQ(readWith({tier}).scatteringWarmSweeps, 0) << tier;
+    EXPECT_EQ(readWith({"mode=blocks", "quality=fast"}).scatteringWarmSweeps, 0);
+    EXPECT_EQ(readWith({"quality=fast", "scattering_warm_sweeps=16"}).scatteringWarmSweeps, 16);
+}
+
 }  // namespace
 }  // namespace nimbus::media

@@ -42,13 +42,15 @@ struct SettingSpec {
     // "with lighting=fragment". Empty: wherever `modes` says.
     std::string actsWhen;
     // What a scene must hold for its effect to show at all, e.g. "a point or spot light inside
-    // the medium", or kShowsWithMovingCamera; empty: any scene with a medium (and meshes, for the
+    // the medium", kShowsWithMovingCamera or kShowsWithMovingMedium; empty: any scene with a medium (and meshes, for the
     // mesh keys).
     std::string showsWith;
 };
 
 // The showsWith of a key whose effect shows only in a frame after the camera moved (a cache).
 inline constexpr char kShowsWithMovingCamera[] = "a camera that moves between frames";
+// The showsWith of a key whose effect shows only in a frame after the medium moved (a warm start).
+inline constexpr char kShowsWithMovingMedium[] = "a medium that moves between frames";
 
 // A value read against its spec: `word` is set (with its index) when the value is one of the
 // spec's words, else the typed field of the spec's type.

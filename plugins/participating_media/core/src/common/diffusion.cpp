@@ -12,7 +12,6 @@ namespace {
 // A voxel with less optical depth across it than this holds no medium: the fluence is zero there
 // (its light leaves the medium).
 constexpr double kEmptyDepth = 1e-6;
-constexpr float kOverRelaxation = 1.9f;
 // The extrapolated boundary lies kBoundary·D past the medium's last voxel face. Marshak's condition
 // gives 2; 4.5 is fitted against the judge on cloud, cumulus and cumulus_aircraft (docs/design-notes.md):
 // the diffusion's isotropic radiance under-counts the light a forward-scattering medium sends back
@@ -76,7 +75,7 @@ System buildSystem(const MediumGrid& m) {
 // One red or black half-sweep; returns the largest change (x) and the largest fluence it leaves in
 // the voxels of its colour (y). A voxel of one colour reads only the other colour's, so the slabs
 // run in parallel (grid_slabs.h).
-glm::vec2 halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& phi, int parity) {
+glm::vec2 halfSweep(const MediumGrid& m, const System& s, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& phi, int parity, float omega) {
     const long strides[3] = {1, static_cast<long>(m.size.x), static_cast<long>(m.size.x) * m.size.y};  // along x, y, z
     return largestOverSlabs(m.size, glm::vec2(0.0f), [&](int z) {
         float change = 0.0f, largest = 0.0f;
@@ -91,7 +90,7 @@ glm::vec2 halfSweep(const MediumGrid& m, const System& s, const std::vector<glm:
                     const long step = f & 1 ? strides[f / 2] : -strides[f / 2];
                     sum += c * phi[static_cast<std::size_t>(static_cast<long>(v) + step)];
                 }
-                const glm::vec3 next = glm::max(glm::mix(phi[v], sum / s.diagonal[v], kOverRelaxation), glm::vec3(0.0f));
+                const glm::vec3 next = glm::max(glm::mix(phi[v], sum / s.diagonal[v], omega), glm::vec3(0.0f));
                 const glm::vec3 d = glm::abs(next - phi[v]);
                 change = std::max({change, d.x, d.y, d.z});
                 largest = std::max({largest, next.x, next.y, next.z});
@@ -154,7 +153,8 @@ int solveDiffusion(const MediumGrid& medium, const std::vector<glm::vec3>& sourc
         ++sweeps;
         // Each voxel changes in one half-sweep only, so the two halves' largest fluence is the grid's
         // (voxels without medium hold 0).
-        const glm::vec2 sweep = glm::max(halfSweep(medium, system, source, fluence, 0), halfSweep(medium, system, source, fluence, 1));
+        const float omega = solve.overRelaxation;
+        const glm::vec2 sweep = glm::max(halfSweep(medium, system, source, fluence, 0, omega), halfSweep(medium, system, source, fluence, 1, omega));
         if (!(sweep.x > solve.tolerance * sweep.y)) break;
     }
     return sweeps;

@@ -45,6 +45,10 @@ struct DiffusionSolve {
     int maxSweeps = 64;           // red-black sweep pairs at most
     float tolerance = 1e-5f;      // stop when no voxel's fluence moves by more than this × the largest
     const EnvironmentGrid* coarser = nullptr;  // environment_grid.h: a solve to start from, when there is no last frame's
+    // environment_grid.h: > 0, a changed frame starts from the grid's last answer (resampled onto the
+    // new grid) with at most this many sweeps instead of from a coarser grid's solve.
+    int warmSweeps = 0;
+    float overRelaxation = 1.9f;  // successive over-relaxation's factor, in (0, 2)
 };
 
 // The net flux F = −D∇φ of the luminance of φ per voxel (zero where there is no medium): central

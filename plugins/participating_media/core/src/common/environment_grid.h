@@ -37,10 +37,12 @@ struct EnvironmentGrid {
     std::vector<glm::vec4> directional;  // per voxel: xyz a (above), w unused
     std::vector<glm::vec3> fluence;  // φ
     int sweeps = 0;                  // the diffusion solve's sweeps this frame (0: the last frame's answer kept)
+    bool warm = false;               // solved from the last frame's answer (DiffusionSolve::warmSweeps), not from its inputs alone
     float rescatter = 0.0f;          // ω·(1 − T̄) over the voxels, weighted by their first scattering: the share of it that scatters again
-    // What the answer was solved for (solveEnvironmentGrid): the medium, grid size, sweep budget and
-    // lighting, every number of them. A frame with the same keeps it.
-    std::vector<double> inputs;
+    // What the answer was solved for (solveEnvironmentGrid), every number of it: the medium, mesh
+    // boxes, grid size and sweep budgets, and apart, the lights and ambient. A frame with the same
+    // keeps it.
+    std::vector<double> inputs, lighting;
 
     bool empty() const { return size.x == 0; }
 };
@@ -63,6 +65,9 @@ void buildEnvironmentGrid(const MediumGrid& medium, const EnvironmentLighting& l
 // The medium voxelised and its grid built, the solve started from one on grids of half as many
 // voxels, down to 4; `grid` holds the last frame's, kept when its medium and lighting are the same
 // (so a frame's picture depends on that frame alone, and a still cloud costs no solve).
+// With solve.warmSweeps, a frame whose medium or mesh boxes moved and whose lights did not starts
+// from the last answer instead (its picture then depends on the frames before), and the first
+// frame after the medium stops is solved cold.
 void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting,
                           int voxelsAlongLongest, DiffusionSolve solve, EnvironmentGrid& grid);
 

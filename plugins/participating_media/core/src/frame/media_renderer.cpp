@@ -54,6 +54,9 @@ bool MediaRenderer::readsOccluders() const {
 
 void MediaRenderer::forgetFrames() {
     for (auto& [name, technique] : made_) technique->forgetFrames();
+    // An answer solved from an earlier frame's (scattering_warm_sweeps) is not this frame's alone; a
+    // cold one is, and an unchanged medium keeps it.
+    if (shared_->environment.warm) shared_->environment = {};
 }
 
 // A mode that does not draw volumes refuses a frame with one rather than leave it out of the picture.
@@ -278,9 +281,11 @@ void MediaRenderer::planScattering(GraphFrame& context) {
     }
     const auto start = std::chrono::steady_clock::now();
     solveEnvironmentGrid(*particles_, *volumes_, {.lights = &context.host.lights, .ambient = context.host.ambient, .meshes = &context.host.occluders},
-                         settings_.scatteringVoxels, {.maxSweeps = settings_.scatteringSweeps}, shared.environment);
+                         settings_.scatteringVoxels, {.maxSweeps = settings_.scatteringSweeps, .warmSweeps = settings_.scatteringWarmSweeps},
+                         shared.environment);
     const EnvironmentGrid& grid = shared.environment;
     if (grid.sweeps > 0) stats_.scatteringSolveMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats_.scatteringWarm = grid.sweeps > 0 && grid.warm;
     for (gpu::Texture* texture : {&shared.environmentTexture, &shared.directionalTexture}) {
         if (*texture && texture->desc().width == grid.size.x && texture->desc().height == grid.size.y && texture->desc().depth == grid.size.z)
             continue;

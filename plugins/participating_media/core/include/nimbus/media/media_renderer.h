@@ -40,6 +40,7 @@ struct MediaFrameStats {
     bool multipleScattering = false;  // the multiple model's grid was read (not: single, or negligible)
     float rescatter = 0.0f;    // the multiple model: the share of first-scattered light that scatters again ("negligible" below 1%)
     double scatteringSolveMs = 0.0;  // the multiple model: CPU time of its grid's solve this frame (0: the last frame's answer kept)
+    bool scatteringWarm = false;     // that solve started from the last frame's answer (scattering_warm_sweeps)
     std::vector<TechniqueStat> technique;  // what it reported (TechniqueStat)
     // A technique's figure as a number (a bool as 0 or 1); `fallback` when it reported none.
     double value(const std::string& key, double fallback = 0.0) const;

@@ -53,6 +53,10 @@ struct MediaRenderSettings {
     // model; zero: the defaults below.
     int scatteringVoxels = 0;  // voxels along the medium's longest side
     int scatteringSweeps = 0;  // most sweeps of the diffusion solve per frame
+    // A frame whose medium or lights changed starts its solve from the last frame's answer and runs
+    // at most this many sweeps; 0: from scratch (a coarser grid's solve) every time, so a frame's
+    // picture never depends on the frames before it.
+    int scatteringWarmSweeps = 0;
     // The technique's own settings (TechniqueEntry::read gives them); empty: its defaults.
     std::any technique;
 };
