@@ -80,26 +80,34 @@ std::vector<float> sweep(const MediumGrid& m, const glm::ivec3& s) {
     return tau;
 }
 
-// Whether the ray from p along d (unit) meets a mesh box before `reach` (a slab test in the box's frame).
+// Whether the ray from a point at `o` (its coordinates along a box's axes, from its centre) with
+// direction `v` (along the same axes) meets the box of half-extents `half` within `reach`.
+bool slabsMeet(const glm::dvec3& o, const glm::dvec3& v, const glm::dvec3& half, double reach) {
+    double lo = 0.0, hi = reach;
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(v[a]) < 1e-12) {
+            if (std::abs(o[a]) > half[a]) return false;
+            continue;
+        }
+        double t0 = (-half[a] - o[a]) / v[a], t1 = (half[a] - o[a]) / v[a];
+        if (t0 > t1) std::swap(t0, t1);
+        lo = std::max(lo, t0);
+        hi = std::min(hi, t1);
+        if (lo > hi) return false;
+    }
+    return true;
+}
+
+// A vector's coordinates along a box's axes.
+glm::dvec3 alongAxes(const glm::dvec3& d, const OccluderBox& box) {
+    return {glm::dot(d, box.axis[0]), glm::dot(d, box.axis[1]), glm::dot(d, box.axis[2])};
+}
+
+// Whether the ray from p along d (unit) meets a mesh box before `reach`.
 bool meetsMesh(const glm::dvec3& p, const glm::dvec3& d, const std::vector<OccluderBox>& meshes,
                double reach = std::numeric_limits<double>::infinity()) {
-    for (const OccluderBox& box : meshes) {
-        double lo = 0.0, hi = reach;
-        bool miss = false;
-        for (int a = 0; a < 3 && !miss; ++a) {
-            const double o = glm::dot(p - box.centre, box.axis[a]), v = glm::dot(d, box.axis[a]);
-            if (std::abs(v) < 1e-12) {
-                miss = std::abs(o) > box.half[a];
-                continue;
-            }
-            double t0 = (-box.half[a] - o) / v, t1 = (box.half[a] - o) / v;
-            if (t0 > t1) std::swap(t0, t1);
-            lo = std::max(lo, t0);
-            hi = std::min(hi, t1);
-            miss = lo > hi;
-        }
-        if (!miss) return true;
-    }
+    for (const OccluderBox& box : meshes)
+        if (slabsMeet(alongAxes(p - box.centre, box), alongAxes(d, box), box.half, reach)) return true;
     return false;
 }
 
@@ -186,15 +194,28 @@ EnvironmentTransmittance environmentTransmittance(const MediumGrid& m, const std
     for (const glm::ivec3& step : steps) directions.push_back(glm::normalize(glm::dvec3(step)));
     std::vector<std::vector<float>> tau(steps.size());
     tbb::parallel_for(std::size_t(0), steps.size(), [&](std::size_t s) { tau[s] = sweep(m, steps[s]); });
+    // Each direction along each box's axes, and per voxel its position along them, once: the ray
+    // tests differ only in the slabs' arithmetic.
+    std::vector<glm::dvec3> directionAlong(steps.size() * meshes.size());
+    for (std::size_t s = 0; s < steps.size(); ++s)
+        for (std::size_t b = 0; b < meshes.size(); ++b) directionAlong[s * meshes.size() + b] = alongAxes(directions[s], meshes[b]);
     EnvironmentTransmittance out{std::vector<float>(m.count(), 0.0f), std::vector<glm::vec3>(m.count(), glm::vec3(0.0f))};
     forEachSlab(m.size, [&](int k) {
+        std::vector<glm::dvec3> pointAlong(meshes.size());
         for (int j = 0; j < m.size.y; ++j)
             for (int i = 0; i < m.size.x; ++i) {
                 const std::size_t v = m.index(i, j, k);
                 const glm::dvec3 p = m.min + (glm::dvec3(i, j, k) + 0.5) * m.voxel;
+                for (std::size_t b = 0; b < meshes.size(); ++b) pointAlong[b] = alongAxes(p - meshes[b].centre, meshes[b]);
+                const auto blocked = [&](std::size_t s) {
+                    for (std::size_t b = 0; b < meshes.size(); ++b)
+                        if (slabsMeet(pointAlong[b], directionAlong[s * meshes.size() + b], meshes[b].half, std::numeric_limits<double>::infinity()))
+                            return true;
+                    return false;
+                };
                 for (std::size_t s = 0; s < steps.size(); ++s) {
                     const glm::dvec3& d = directions[s];
-                    if (!meshes.empty() && meetsMesh(p, d, meshes)) continue;
+                    if (blocked(s)) continue;
                     const float t = std::exp(-tau[s][v]) / 14.0f;
                     out.mean[v] += t;
                     out.moment[v] += t * glm::vec3(d);
