@@ -82,7 +82,7 @@ std::vector<float> sweep(const MediumGrid& m, const glm::ivec3& s) {
 
 // Whether the ray from a point at `o` (its coordinates along a box's axes, from its centre) with
 // direction `v` (along the same axes) meets the box of half-extents `half` within `reach`.
-bool slabsMeet(const glm::dvec3& o, const glm::dvec3& v, const glm::dvec3& half, double reach) {
+inline bool slabsMeet(const glm::dvec3& o, const glm::dvec3& v, const glm::dvec3& half, double reach) {
     double lo = 0.0, hi = reach;
     for (int a = 0; a < 3; ++a) {
         if (std::abs(v[a]) < 1e-12) {
@@ -277,31 +277,34 @@ std::vector<glm::vec3> dilated(const MediumGrid& m, const std::vector<glm::vec3>
     // Per voxel, whether it or a neighbour along x holds light: most empty voxels have none of the
     // 27 around them, and the 9 rows' flags tell it without the mean.
     std::vector<char> nearX(phi.size(), 0);
-    for (int z = 0; z < m.size.z; ++z)
+    forEachSlab(m.size, [&](int z) {  // a slab writes its own rows' flags only
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 if (phi[m.index(x, y, z)] == glm::vec3(0.0f)) continue;
                 for (int dx = std::max(x - 1, 0); dx <= std::min(x + 1, m.size.x - 1); ++dx) nearX[m.index(dx, y, z)] = 1;
             }
+    });
     forEachSlab(m.size, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
             for (int x = 0; x < m.size.x; ++x) {
                 const std::size_t v = m.index(x, y, z);
                 if (phi[v] != glm::vec3(0.0f)) continue;
+                // The 27 around it inside the grid.
+                const glm::ivec3 lo = glm::max(glm::ivec3(x, y, z) - 1, glm::ivec3(0)), hi = glm::min(glm::ivec3(x, y, z) + 1, m.size - 1);
                 bool any = false;
-                for (int dz = std::max(z - 1, 0); dz <= std::min(z + 1, m.size.z - 1) && !any; ++dz)
-                    for (int dy = std::max(y - 1, 0); dy <= std::min(y + 1, m.size.y - 1) && !any; ++dy) any = nearX[m.index(x, dy, dz)] != 0;
+                for (int dz = lo.z; dz <= hi.z && !any; ++dz)
+                    for (int dy = lo.y; dy <= hi.y && !any; ++dy) any = nearX[m.index(x, dy, dz)] != 0;
                 if (!any) continue;
                 glm::vec3 sum(0.0f);
                 int count = 0;
-                for (int c = 0; c < 27; ++c) {
-                    const glm::ivec3 q = glm::ivec3(x, y, z) + glm::ivec3(c % 3 - 1, (c / 3) % 3 - 1, c / 9 - 1);
-                    if (glm::any(glm::lessThan(q, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(q, m.size))) continue;
-                    const glm::vec3& n = phi[m.index(q.x, q.y, q.z)];
-                    if (n == glm::vec3(0.0f)) continue;
-                    sum += n;
-                    ++count;
-                }
+                for (int qz = lo.z; qz <= hi.z; ++qz)
+                    for (int qy = lo.y; qy <= hi.y; ++qy)
+                        for (int qx = lo.x; qx <= hi.x; ++qx) {  // x fastest: the sum's order is fixed
+                            const glm::vec3& n = phi[m.index(qx, qy, qz)];
+                            if (n == glm::vec3(0.0f)) continue;
+                            sum += n;
+                            ++count;
+                        }
                 if (count > 0) out[v] = sum / static_cast<float>(count);
             }
     });
