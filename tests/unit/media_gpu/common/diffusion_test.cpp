@@ -202,8 +202,9 @@ TEST(EnvironmentGrid, AWarmStartEndsNearTheColdSolveInFewerSweeps) {
 }
 
 // A warm answer is left for a cold one when the medium stops (a still frame's picture is its own
-// again) and when a light changes (its scattering would lag for many frames).
-TEST(EnvironmentGrid, AStoppedMediumOrAChangedLightIsSolvedCold) {
+// again) and when a light jumps (its scattering would lag for many frames); a sun that turns a
+// little between frames, as one crossing the sky does, keeps it warm.
+TEST(EnvironmentGrid, AStoppedMediumOrAJumpedLightIsSolvedCold) {
     ParticleSet p = oneParticle(5.0f);
     std::vector<Light> sun{Light{.kind = gpu::LightKind::Directional, .direction = glm::dvec3(0.0, -1.0, 0.0), .radiance = glm::vec3(3.0f)}};
     const EnvironmentLighting lighting{.lights = &sun, .ambient = glm::vec3(0.2f)};
@@ -226,13 +227,19 @@ TEST(EnvironmentGrid, AStoppedMediumOrAChangedLightIsSolvedCold) {
     p.position[0].x += 0.05;
     solveEnvironmentGrid(p, {}, lighting, 16, {.warmSweeps = 8}, grid);
     ASSERT_TRUE(grid.warm);
+    sun[0].direction = glm::normalize(glm::dvec3(0.01, -1.0, 0.0));  // turned by 0.6 degrees
+    solveEnvironmentGrid(p, {}, lighting, 16, {.warmSweeps = 8}, grid);
+    EXPECT_TRUE(grid.warm) << "a sun crossing the sky";
     p.position[0].x += 0.05;
-    sun[0].direction = glm::normalize(glm::dvec3(0.1, -1.0, 0.0));
+    sun[0].direction = glm::normalize(glm::dvec3(0.1, -1.0, 0.0));  // by 5.7 degrees
     solveEnvironmentGrid(p, {}, lighting, 16, {.warmSweeps = 8}, grid);
     EnvironmentGrid fresh;
     solveEnvironmentGrid(p, {}, lighting, 16, {.warmSweeps = 8}, fresh);
     EXPECT_FALSE(grid.warm);
     EXPECT_TRUE(sameGrid(grid, fresh));
+    sun[0].radiance = glm::vec3(0.0f);  // switched off
+    solveEnvironmentGrid(p, {}, lighting, 16, {.warmSweeps = 8}, grid);
+    EXPECT_FALSE(grid.warm);
 }
 
 }  // namespace

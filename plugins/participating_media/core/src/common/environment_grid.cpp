@@ -384,8 +384,8 @@ std::vector<double> inputKey(const ParticleSet& particles, const std::vector<Vol
     return key;
 }
 
-// The lights and ambient, every number of them: a warm start (DiffusionSolve::warmSweeps) needs the
-// same, since a light switched on would take many frames of a few sweeps to show its scattering.
+// The lights and ambient, every number of them (3 for the ambient, then kLightKey per light).
+constexpr std::size_t kLightKey = 13;
 std::vector<double> lightingKey(const EnvironmentLighting& lighting) {
     std::vector<double> key{lighting.ambient.x, lighting.ambient.y, lighting.ambient.z};
     if (lighting.lights != nullptr)
@@ -393,6 +393,30 @@ std::vector<double> lightingKey(const EnvironmentLighting& lighting) {
             key.insert(key.end(), {static_cast<double>(l.kind), l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
                                    l.direction.z, l.radiance.x, l.radiance.y, l.radiance.z, l.range, l.innerConeAngle, l.outerConeAngle});
     return key;
+}
+
+// Whether a warm start (DiffusionSolve::warmSweeps) may follow the lights from `last` to `now`:
+// the same lights, each turned by at most kWarmTurn, moved by at most a voxel, and its light and
+// the ambient changed by at most kWarmChange, as a sun crossing the sky or a carried lamp does
+// from frame to frame. A light switched on or off, or one that jumped, would take many frames of a
+// few sweeps to show its scattering, so it is solved cold.
+constexpr double kWarmTurn = 0.035;   // radians, 2 degrees
+constexpr double kWarmChange = 0.1;   // relative
+bool lightsClose(const std::vector<double>& last, const std::vector<double>& now, double voxel) {
+    if (last.size() != now.size()) return false;
+    const auto relative = [](double a, double b) { return std::abs(a - b) <= kWarmChange * std::max(std::abs(a), std::abs(b)); };
+    for (std::size_t i = 0; i < 3; ++i)
+        if (!relative(last[i], now[i])) return false;
+    for (std::size_t l = 3; l + kLightKey <= now.size(); l += kLightKey) {
+        const double* a = &last[l];
+        const double* b = &now[l];
+        const glm::dvec3 fromA(a[1], a[2], a[3]), fromB(b[1], b[2], b[3]), dirA(a[4], a[5], a[6]), dirB(b[4], b[5], b[6]);
+        if (a[0] != b[0] || glm::length(fromA - fromB) > voxel) return false;
+        if (glm::dot(dirA, dirB) < std::cos(kWarmTurn) * glm::length(dirA) * glm::length(dirB)) return false;
+        for (std::size_t k = 7; k < kLightKey; ++k)
+            if (!relative(a[k], b[k])) return false;
+    }
+    return true;
 }
 
 // scattering_warm_sweeps relax less: from a start the medium has moved away from, 1.9 overshoots
@@ -450,10 +474,10 @@ void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume
     }
     // A warm answer whose medium stopped is solved cold once, so a still frame's picture is its own.
     EnvironmentGrid start;
-    const bool warm = !same && solve.warmSweeps > 0 && !grid.fluence.empty() && grid.lighting == lights;
+    const bool warm = !same && solve.warmSweeps > 0 && !grid.fluence.empty() && lightsClose(grid.lighting, lights, grid.voxel.x);
     if (warm) {
-        // scattering_warm_sweeps: the last frame's fluence, where the medium was close to this
-        // frame's and the lights the same, is nearer this answer than a coarser grid's.
+        // scattering_warm_sweeps: the last frame's fluence, where the medium and lights were close
+        // to this frame's, is nearer this answer than a coarser grid's.
         start = std::move(grid);
         solve.maxSweeps = std::min(solve.maxSweeps, solve.warmSweeps);
         solve.overRelaxation = kWarmOverRelaxation;

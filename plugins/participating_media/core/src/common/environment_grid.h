@@ -65,9 +65,9 @@ void buildEnvironmentGrid(const MediumGrid& medium, const EnvironmentLighting& l
 // The medium voxelised and its grid built, the solve started from one on grids of half as many
 // voxels, down to 4; `grid` holds the last frame's, kept when its medium and lighting are the same
 // (so a frame's picture depends on that frame alone, and a still cloud costs no solve).
-// With solve.warmSweeps, a frame whose medium or mesh boxes moved and whose lights did not starts
-// from the last answer instead (its picture then depends on the frames before), and the first
-// frame after the medium stops is solved cold.
+// With solve.warmSweeps, a frame whose medium, mesh boxes or lights moved a little starts from the
+// last answer instead (its picture then depends on the frames before); a light that jumped or was
+// switched, and the first frame after everything stops, are solved cold.
 void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting,
                           int voxelsAlongLongest, DiffusionSolve solve, EnvironmentGrid& grid);
 

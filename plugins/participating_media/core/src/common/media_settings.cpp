@@ -128,11 +128,12 @@ const SharedField kSharedFields[] = {
       &setInteger<&MediaRenderSettings::scatteringSweeps>},
      Acts::MultipleScattering},
     {{{.key = "scattering_warm_sweeps",
-       .help = "multiple scattering: a frame whose medium moved, under the same lights, starts its diffusion solve from the "
-               "last frame's answer and runs at most this many sweeps, so a moving plume pays a few sweeps a frame and its "
-               "scattered light follows over frames; 16 takes about half the solve's time and errs up to 3% on a fast plume; a "
-               "frame whose lights changed, and the first after the medium stops, are solved cold (0: cold every frame, so a "
-               "frame's picture never depends on the ones before, as scrubbing and playing the editor's timeline rely on)",
+       .help = "multiple scattering: a frame whose medium or lights moved a little (a light by at most 2 degrees or a voxel, "
+               "its light by 10%) starts its diffusion solve from the last frame's answer and runs at most this many sweeps, so "
+               "a moving plume pays a few sweeps a frame and its scattered light follows over frames; 16 takes about half the "
+               "solve's time and errs up to 3% on a fast plume; a light that jumped or was switched, and the first frame after "
+               "everything stops, are solved cold (0: cold every frame, so a frame's picture never depends on the ones before, "
+               "as scrubbing and playing the editor's timeline rely on)",
        .type = SettingType::Integer, .min = 0, .max = 1024, .defaultValue = "0",
        .actsWhen = "in the multiple-scattering model", .showsWith = kShowsWithMovingMedium},
       &setInteger<&MediaRenderSettings::scatteringWarmSweeps>},
