@@ -384,8 +384,7 @@ std::vector<double> inputKey(const ParticleSet& particles, const std::vector<Vol
     return key;
 }
 
-// The lights and ambient, every number of them (3 for the ambient, then kLightKey per light).
-constexpr std::size_t kLightKey = 13;
+// The lights and ambient, every number of them.
 std::vector<double> lightingKey(const EnvironmentLighting& lighting) {
     std::vector<double> key{lighting.ambient.x, lighting.ambient.y, lighting.ambient.z};
     if (lighting.lights != nullptr)
@@ -395,26 +394,26 @@ std::vector<double> lightingKey(const EnvironmentLighting& lighting) {
     return key;
 }
 
-// Whether a warm start (DiffusionSolve::warmSweeps) may follow the lights from `last` to `now`:
-// the same lights, each turned by at most kWarmTurn, moved by at most a voxel, and its light and
-// the ambient changed by at most kWarmChange, as a sun crossing the sky or a carried lamp does
-// from frame to frame. A light switched on or off, or one that jumped, would take many frames of a
-// few sweeps to show its scattering, so it is solved cold.
+// Whether a warm start (DiffusionSolve::warmSweeps) may follow the lights from the grid's to
+// `now`'s: the same lights, each turned by at most kWarmTurn, moved by at most a voxel, and its
+// light and the ambient changed by at most kWarmChange, as a sun crossing the sky or a carried
+// lamp does from frame to frame. A light switched on or off, or one that jumped, would take many
+// frames of a few sweeps to show its scattering, so it is solved cold.
 constexpr double kWarmTurn = 0.035;   // radians, 2 degrees
 constexpr double kWarmChange = 0.1;   // relative
-bool lightsClose(const std::vector<double>& last, const std::vector<double>& now, double voxel) {
-    if (last.size() != now.size()) return false;
-    const auto relative = [](double a, double b) { return std::abs(a - b) <= kWarmChange * std::max(std::abs(a), std::abs(b)); };
-    for (std::size_t i = 0; i < 3; ++i)
-        if (!relative(last[i], now[i])) return false;
-    for (std::size_t l = 3; l + kLightKey <= now.size(); l += kLightKey) {
-        const double* a = &last[l];
-        const double* b = &now[l];
-        const glm::dvec3 fromA(a[1], a[2], a[3]), fromB(b[1], b[2], b[3]), dirA(a[4], a[5], a[6]), dirB(b[4], b[5], b[6]);
-        if (a[0] != b[0] || glm::length(fromA - fromB) > voxel) return false;
-        if (glm::dot(dirA, dirB) < std::cos(kWarmTurn) * glm::length(dirA) * glm::length(dirB)) return false;
-        for (std::size_t k = 7; k < kLightKey; ++k)
-            if (!relative(a[k], b[k])) return false;
+bool lightsClose(const EnvironmentGrid& last, const EnvironmentLighting& now) {
+    static const std::vector<Light> kNone;
+    const std::vector<Light>& lights = now.lights != nullptr ? *now.lights : kNone;
+    const auto close = [](double a, double b) { return std::abs(a - b) <= kWarmChange * std::max(std::abs(a), std::abs(b)); };
+    const auto closeRgb = [&](const glm::vec3& a, const glm::vec3& b) { return close(a.x, b.x) && close(a.y, b.y) && close(a.z, b.z); };
+    if (last.lights.size() != lights.size() || !closeRgb(last.ambient, now.ambient)) return false;
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const Light &a = last.lights[i], &b = lights[i];
+        if (a.kind != b.kind || !closeRgb(a.radiance, b.radiance) || !close(a.range, b.range) ||
+            !close(a.innerConeAngle, b.innerConeAngle) || !close(a.outerConeAngle, b.outerConeAngle))
+            return false;
+        if (a.kind != gpu::LightKind::Directional && glm::length(a.position - b.position) > last.voxel.x) return false;
+        if (a.kind != gpu::LightKind::Point && glm::dot(a.direction, b.direction) < std::cos(kWarmTurn)) return false;  // unit directions
     }
     return true;
 }
@@ -466,15 +465,16 @@ void solveCoarser(const ParticleSet& particles, const std::vector<Volume>& volum
 
 void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume>& volumes, const EnvironmentLighting& lighting,
                           int voxelsAlongLongest, DiffusionSolve solve, EnvironmentGrid& grid) {
-    std::vector<double> key = inputKey(particles, volumes, lighting.meshes, voxelsAlongLongest, solve), lights = lightingKey(lighting);
-    const bool same = !grid.texels.empty() && grid.inputs == key && grid.lighting == lights;
+    std::vector<double> key = inputKey(particles, volumes, lighting.meshes, voxelsAlongLongest, solve);
+    const bool same = !grid.texels.empty() && grid.inputs == key &&
+                      lightingKey({.lights = &grid.lights, .ambient = grid.ambient}) == lightingKey(lighting);
     if (same && !grid.warm) {
         grid.sweeps = 0;
         return;
     }
     // A warm answer whose medium stopped is solved cold once, so a still frame's picture is its own.
     EnvironmentGrid start;
-    const bool warm = !same && solve.warmSweeps > 0 && !grid.fluence.empty() && lightsClose(grid.lighting, lights, grid.voxel.x);
+    const bool warm = !same && solve.warmSweeps > 0 && !grid.fluence.empty() && lightsClose(grid, lighting);
     if (warm) {
         // scattering_warm_sweeps: the last frame's fluence, where the medium and lights were close
         // to this frame's, is nearer this answer than a coarser grid's.
@@ -490,7 +490,8 @@ void solveEnvironmentGrid(const ParticleSet& particles, const std::vector<Volume
     grid = {};
     buildEnvironmentGrid(voxelizeMedium(particles, volumes, voxelsAlongLongest), lighting, solve, grid);
     grid.inputs = std::move(key);
-    grid.lighting = std::move(lights);
+    grid.lights = lighting.lights != nullptr ? *lighting.lights : std::vector<Light>{};
+    grid.ambient = lighting.ambient;
     grid.warm = warm;
 }
 

@@ -39,10 +39,11 @@ struct EnvironmentGrid {
     int sweeps = 0;                  // the diffusion solve's sweeps this frame (0: the last frame's answer kept)
     bool warm = false;               // solved from the last frame's answer (DiffusionSolve::warmSweeps), not from its inputs alone
     float rescatter = 0.0f;          // ω·(1 − T̄) over the voxels, weighted by their first scattering: the share of it that scatters again
-    // What the answer was solved for (solveEnvironmentGrid), every number of it: the medium, mesh
-    // boxes, grid size and sweep budgets, and apart, the lights and ambient. A frame with the same
-    // keeps it.
-    std::vector<double> inputs, lighting;
+    // What the answer was solved for (solveEnvironmentGrid): every number of the medium, mesh boxes,
+    // grid size and sweep budgets, and the lights and ambient. A frame with the same keeps it.
+    std::vector<double> inputs;
+    std::vector<Light> lights;
+    glm::vec3 ambient{0.0f};
 
     bool empty() const { return size.x == 0; }
 };
