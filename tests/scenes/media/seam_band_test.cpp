@@ -138,6 +138,27 @@ TEST_F(SeamBand, SliceCropOnCumulusAircraft) {
     EXPECT_LE(e[5].band, 1.5 * e[0].band) << "fast within the issue's bound with the crop at balanced's slice detail";
 }
 
+// What fast needs to meet the issue's bounds, as settings a game can choose: the particles a mesh
+// enters lit per fragment (cut_lighting), balanced's slices near the mesh and the default sun map.
+// Measured: wing 1.31x exact (0.23x hard-clipped), cumulus_aircraft 1.14x (0.13x); at 1280x720 this
+// costs the wing's fast frame 3.6x and cumulus_aircraft's 2.8x (docs/PERFORMANCE.md), so fast does
+// not take it by default. Blocks are printed beside it: in every tier they err more in
+// cumulus_aircraft's band than this (exact 1.39 %), so the issue's "blocks in fast err less than
+// fast particles" cannot hold together with fast's 1.5x (docs/design-notes.md).
+TEST_F(SeamBand, FastMeetsTheBoundsWithTheSeamSettings) {
+    const std::vector<std::string> seam{"quality=fast", "cut_lighting=particles", "slices=32", "slice_detail=6", "shadow_map_size=2048"};
+    for (const std::filesystem::path& scene : {mediaScene("wing_through_cloud"), contentScene("cumulus_aircraft")}) {
+        const std::vector<BandErrors> e =
+            measure(scene, {{}, {"soft_particles=off"}, seam, {"mode=blocks", "quality=exact"}},
+                    {"exact", "exact hard-clipped", "fast with the seam settings", "blocks exact"});
+        ASSERT_EQ(e.size(), 4u);
+        std::printf("[ measured ] fast with the seam settings: %.2f x exact, %.2f x hard-clipped; blocks exact %.2f x exact\n",
+                    e[2].band / e[0].band, e[2].band / e[1].band, e[3].band / e[0].band);
+        EXPECT_LE(e[2].band, 1.5 * e[0].band) << scene.filename();
+        EXPECT_LE(e[2].band, 0.5 * e[1].band) << scene.filename();
+    }
+}
+
 // Mixed resolution (fast tier, media_scale auto at ¼ here): the medium drawn again at full
 // resolution at the reduced image's edges near the wing, and where the wing lies inside a particle
 // (mesh_cuts), takes the band to the full-resolution frame's error in particles and raymarch.
