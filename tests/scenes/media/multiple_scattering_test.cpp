@@ -152,28 +152,29 @@ TEST_F(GlSceneTest, ADarkThinMediumSkipsTheMultipleTermByItsMeasure) {
 INSTANTIATE_TEST_SUITE_P(
     Content, MultipleVsJudge,
     ::testing::Values(
-        MultipleCase{"cumulus", 0.0, "particles", "balanced", 0.029, 0.28},  // 2.3 %, single 10.4 %
-        // 2.3 %, single 10.4 %. At 96x54 fast's billboards are too small for a reduced media
+        MultipleCase{"cumulus", 0.0, "particles", "balanced", 0.026, 0.28},  // 2.1 %, single 10.4 %
+        // 2.1 %, single 10.4 %. At 96x54 fast's billboards are too small for a reduced media
         // target, which gave 4.3 % when media_scale=auto still took ½ for them.
-        MultipleCase{"cumulus", 0.0, "particles", "fast", 0.029, 0.28},
-        MultipleCase{"cumulus", 0.0, "raymarch", "balanced", 0.027, 0.0},  // 2.2 %
-        MultipleCase{"cumulus", 0.0, "blocks", "balanced", 0.028, 0.0},  // 2.2 %
-        MultipleCase{"cumulus", 0.0, "sheets", "balanced", 0.031, 0.0},  // 2.4 %
-        // Cloud's thin lit shell and the airliner's box shadow are finer than the grid: 2.4× and 2.0×.
-        MultipleCase{"cloud", 0.0, "particles", "balanced", 0.049, 0.45},  // 4.0 %, single 9.4 %
-        MultipleCase{"cloud", 0.0, "raymarch", "balanced", 0.054, 0.0},  // 4.3 %
-        MultipleCase{"cumulus_aircraft", 0.0, "particles", "balanced", 0.057, 0.6},  // 4.6 %, single 9.3 %
+        MultipleCase{"cumulus", 0.0, "particles", "fast", 0.026, 0.28},
+        MultipleCase{"cumulus", 0.0, "raymarch", "balanced", 0.027, 0.0},  // 2.1 %
+        MultipleCase{"cumulus", 0.0, "blocks", "balanced", 0.024, 0.0},  // 1.9 %
+        MultipleCase{"cumulus", 0.0, "sheets", "balanced", 0.027, 0.0},  // 2.1 %
+        // The meshes are walls to the grid's light (diffusion.h), as the model's meshes absorb what
+        // reaches them: cumulus_aircraft 3.0x below single scattering (it was 2.0x), cloud 2.9x (2.4x).
+        MultipleCase{"cloud", 0.0, "particles", "balanced", 0.041, 0.36},  // 3.3 %, single 9.4 %
+        MultipleCase{"cloud", 0.0, "raymarch", "balanced", 0.041, 0.0},  // 3.3 %
+        MultipleCase{"cumulus_aircraft", 0.0, "particles", "balanced", 0.038, 1.0 / 3.0},  // 3.1 %, single 9.3 %
         // Seen against a low sun: the silver linings are the forward peak's orders (peak_orders.glsl).
         // Over the 10 % (design-notes.md); bounded here so that they stay.
-        MultipleCase{"cumulus_field", 0.0, "particles", "exact", 0.2, 0.5},  // 16.0 %, single 37.6 %
-        MultipleCase{"steam", 8.0, "particles", "balanced", 0.065, 0.0},  // 5.2 %
-        MultipleCase{"steam", 8.0, "particles", "fast", 0.078, 0.0},  // 6.2 %
+        MultipleCase{"cumulus_field", 0.0, "particles", "exact", 0.2, 0.5},  // 15.9 %, single 37.6 %
+        MultipleCase{"steam", 8.0, "particles", "balanced", 0.064, 0.0},  // 5.1 %
+        MultipleCase{"steam", 8.0, "particles", "fast", 0.077, 0.0},  // 6.1 %
         MultipleCase{"smoke", 8.0, "particles", "balanced", 0.017, 0.0},  // 1.3 %
         MultipleCase{"smoke", 8.0, "particles", "fast", 0.027, 0.0},  // 2.2 %
         // A lamp inside the fire: its scattered light peaks within a voxel of it, which the grid smooths.
-        MultipleCase{"campfire", 4.0, "particles", "balanced", 0.083, 0.0},  // 6.7 %
-        MultipleCase{"jet", 6.0, "particles", "balanced", 0.033, 0.0},  // 2.6 %
-        MultipleCase{"explosion", 0.8, "particles", "balanced", 0.05, 0.0},  // 4.0 %
+        MultipleCase{"campfire", 4.0, "particles", "balanced", 0.083, 0.0},  // 7.7 %
+        MultipleCase{"jet", 6.0, "particles", "balanced", 0.032, 0.0},  // 2.5 %
+        MultipleCase{"explosion", 0.8, "particles", "balanced", 0.048, 0.0},  // 3.8 %
         MultipleCase{"fog_smoke", 8.0, "particles", "balanced", 0.0062, 0.0}),  // 0.5 %
     [](const ::testing::TestParamInfo<MultipleCase>& param) {
         return std::string(param.param.scene) + "_" + param.param.mode + "_" + param.param.quality;

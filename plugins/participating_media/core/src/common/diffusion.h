@@ -10,9 +10,14 @@
 // condition). Solved by red-black successive over-relaxation from a given start (environment_grid.h
 // starts it from a coarser grid's answer).
 //
+// Meshes are walls: the model's meshes reflect nothing into the medium, so scattered light that
+// reaches one is gone. A face between two voxels whose centres a mesh's box lies between, and a
+// voxel whose centre lies inside one, meet the fluence's boundary as empty space does (MeshWalls).
+//
 // Does not: keep the scattered light's direction (forward peaks of later orders are lost, which the
 // single-scattering term carries for order 1), or resolve anything finer than a voxel.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -39,6 +44,11 @@ struct MediumGrid {
     }
 };
 
+// Per voxel of a MediumGrid: bit a (0..2) where a mesh lies between its centre and its neighbour's
+// along +a, kInsideMesh where its centre lies inside a mesh. Empty: no mesh among the voxels.
+using MeshWalls = std::vector<std::uint8_t>;
+constexpr std::uint8_t kInsideMesh = 8;
+
 struct EnvironmentGrid;
 
 struct DiffusionSolve {
@@ -49,13 +59,15 @@ struct DiffusionSolve {
     // new grid) with at most this many sweeps instead of from a coarser grid's solve.
     int warmSweeps = 0;
     float overRelaxation = 1.9f;  // successive over-relaxation's factor, in (0, 2)
+    const MeshWalls* walls = nullptr;  // the meshes among the voxels; null: none
 };
 
 // The net flux F = −D∇φ of the luminance of φ per voxel (zero where there is no medium): central
-// differences inside, one-sided to zero at the extrapolated boundary where a neighbour is empty.
+// differences inside, one-sided to zero at the extrapolated boundary where a neighbour is empty or
+// behind a mesh.
 // The radiance of the diffuse light is then (φ + 3F·ω)/4π (the P1 approximation), which the
 // passes use to see forward-scattering media brighter where light leaves towards the eye.
-std::vector<glm::vec3> diffusionFlux(const MediumGrid& medium, const std::vector<glm::vec3>& fluence);
+std::vector<glm::vec3> diffusionFlux(const MediumGrid& medium, const std::vector<glm::vec3>& fluence, const MeshWalls* walls = nullptr);
 
 // φ per voxel for first-scattering source `source` (W/m³ per channel, Q above), starting from
 // `fluence` when it has the grid's size, else from zero. Returns the sweeps run.

@@ -111,6 +111,36 @@ bool meetsMesh(const glm::dvec3& p, const glm::dvec3& d, const std::vector<Occlu
     return false;
 }
 
+// The voxels' walls (diffusion.h MeshWalls): per mesh box, the voxels around it are tested, each
+// centre's segment to its neighbour along +x, +y and +z against the box, and the centre itself.
+MeshWalls meshWalls(const MediumGrid& m, const std::vector<OccluderBox>& meshes) {
+    if (meshes.empty() || m.count() == 0) return {};
+    MeshWalls walls(m.count(), 0);
+    for (const OccluderBox& box : meshes) {
+        const glm::dvec3 reach = axisAlignedHalf(box);
+        // A segment from a centre within a voxel below the box's lower corner can reach into it.
+        const glm::ivec3 lo = glm::clamp(glm::ivec3(glm::floor((box.centre - reach - m.min) / m.voxel)) - 1, glm::ivec3(0), m.size - 1);
+        const glm::ivec3 hi = glm::clamp(glm::ivec3(glm::floor((box.centre + reach - m.min) / m.voxel)), glm::ivec3(0), m.size - 1);
+        glm::dvec3 axes[3];
+        for (int a = 0; a < 3; ++a) {
+            glm::dvec3 d(0.0);
+            d[a] = 1.0;
+            axes[a] = alongAxes(d, box);
+        }
+        for (int z = lo.z; z <= hi.z; ++z)
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x) {
+                    const glm::dvec3 p = m.min + (glm::dvec3(x, y, z) + 0.5) * m.voxel;
+                    const glm::dvec3 o = alongAxes(p - box.centre, box);
+                    std::uint8_t& bits = walls[m.index(x, y, z)];
+                    for (int a = 0; a < 3; ++a)
+                        if (slabsMeet(o, axes[a], box.half, m.voxel)) bits |= static_cast<std::uint8_t>(1 << a);
+                    if (glm::all(glm::lessThanEqual(glm::abs(o), box.half))) bits |= kInsideMesh;
+                }
+    }
+    return walls;
+}
+
 // The trilinear blend at u (in voxel-centre units) of fetch(voxel index) over a grid of `size`,
 // each corner outside it taken as `outside` (or, with clampToEdge, as the nearest voxel).
 template <typename T, typename Fetch>
@@ -428,13 +458,16 @@ constexpr float kWarmOverRelaxation = 1.5f;
 struct Level {
     EnvironmentTransmittance environment;
     std::vector<glm::vec3> source;
+    MeshWalls walls;
 };
 Level solveLevel(const MediumGrid& medium, const EnvironmentLighting& lighting, const DiffusionSolve& solve, EnvironmentGrid& grid) {
     static const std::vector<OccluderBox> kNoMeshes;
     Level level;
     if (medium.count() > 0) {
-        level.environment = environmentTransmittance(medium, lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes);
+        const std::vector<OccluderBox>& meshes = lighting.meshes != nullptr ? *lighting.meshes : kNoMeshes;
+        level.environment = environmentTransmittance(medium, meshes);
         level.source = firstScattering(medium, lighting, level.environment.mean);
+        level.walls = meshWalls(medium, meshes);
     }
     grid.sweeps = 0;
     grid.rescatter = 0.0f;
@@ -444,7 +477,9 @@ Level solveLevel(const MediumGrid& medium, const EnvironmentLighting& lighting, 
     grid.texels.clear();
     grid.directional.clear();
     grid.fluence = solve.coarser != nullptr ? resampled(*solve.coarser, medium) : std::vector<glm::vec3>{};
-    if (medium.count() > 0) grid.sweeps = solveDiffusion(medium, level.source, grid.fluence, solve);
+    DiffusionSolve walled = solve;
+    walled.walls = &level.walls;
+    if (medium.count() > 0) grid.sweeps = solveDiffusion(medium, level.source, grid.fluence, walled);
     return level;
 }
 
@@ -544,7 +579,7 @@ void buildEnvironmentGrid(const MediumGrid& medium, const EnvironmentLighting& l
     grid.rescatter = first > 0.0 ? static_cast<float>(again / first) : 0.0f;
     grid.texels.resize(medium.count());
     for (std::size_t v = 0; v < medium.count(); ++v) grid.texels[v] = glm::vec4(environment.mean[v], radiance[v] * inv4Pi);
-    grid.directional = directionalTexels(medium, lighting.ambient, environment, radiance, diffusionFlux(medium, grid.fluence));
+    grid.directional = directionalTexels(medium, lighting.ambient, environment, radiance, diffusionFlux(medium, grid.fluence, &level.walls));
 }
 
 }  // namespace nimbus::media
