@@ -150,6 +150,26 @@ TEST(EnvironmentGrid, AMeshBoxIsAWallToTheScatteredLight) {
     }
 }
 
+// A lamp's light scattered in the voxels around it is their mean of 1/r², not their centres':
+// whether the lamp sits on a voxel's centre (which the centre's value would leave dark) or on a
+// corner, the light the grid holds is about the same.
+TEST(EnvironmentGrid, ALampLightsTheVoxelsAroundItWhereverItSits) {
+    const MediumGrid m = uniform(16, 0.5f, glm::vec3(0.9f));
+    const glm::dvec3 centre = m.min + glm::dvec3(8.5) * m.voxel;
+    const auto held = [&](const glm::dvec3& at) {
+        const std::vector<Light> lamp{Light{.kind = gpu::LightKind::Point, .position = at, .radiance = glm::vec3(1.0f)}};
+        EnvironmentGrid grid;
+        buildEnvironmentGrid(m, {.lights = &lamp}, {}, grid);
+        double sum = 0.0;
+        for (const glm::vec3& f : grid.fluence) sum += f.x;
+        return sum;
+    };
+    const double onCentre = held(centre), onCorner = held(centre + 0.5 * m.voxel);
+    std::printf("[ measured ] the light held with the lamp on a voxel's centre / corner: %.4g / %.4g\n", onCentre, onCorner);
+    EXPECT_GT(onCentre, 0.0);
+    EXPECT_NEAR(onCentre / onCorner, 1.0, 0.05);
+}
+
 // A frame whose medium and lighting are the last one's keeps its answer without a solve; any
 // change solves from scratch, so the answer never depends on the frames before.
 TEST(EnvironmentGrid, KeepsTheAnswerOnlyForTheSameFrame) {

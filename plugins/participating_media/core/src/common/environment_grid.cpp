@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "common/grid_slabs.h"
+#include "common/voxel_light.h"
 #include "nimbus/media/optics.h"
 
 namespace nimbus::media {
@@ -177,37 +178,6 @@ double depthAlong(const MediumGrid& m, const glm::dvec3& p, const glm::dvec3& d,
     return tau;
 }
 
-// E at p from one light, with the direction towards it and its distance (assets/light_model.h's
-// formulas, which the core cannot include).
-struct Arrival {
-    glm::dvec3 toLight{0.0};
-    double distance = 0.0;
-    glm::vec3 irradiance{0.0f};
-};
-Arrival arrival(const Light& light, const glm::dvec3& p) {
-    Arrival a;
-    if (light.kind == gpu::LightKind::Directional) {
-        a.toLight = -light.direction;
-        a.distance = std::numeric_limits<double>::infinity();
-        a.irradiance = light.radiance;
-        return a;
-    }
-    const glm::dvec3 d = light.position - p;
-    a.distance = glm::length(d);
-    if (!(a.distance > 1e-9)) return a;
-    a.toLight = d / a.distance;
-    double scale = 1.0 / (a.distance * a.distance);
-    if (light.range > 0.0) scale *= std::pow(std::clamp(1.0 - std::pow(a.distance / light.range, 4.0), 0.0, 1.0), 2.0);
-    if (light.kind == gpu::LightKind::Spot) {
-        const double cosOuter = std::cos(light.outerConeAngle);
-        const double k = 1.0 / std::max(0.001, std::cos(light.innerConeAngle) - cosOuter);
-        const double c = std::clamp(glm::dot(-a.toLight, light.direction) * k - cosOuter * k, 0.0, 1.0);
-        scale *= c * c;
-    }
-    a.irradiance = light.radiance * static_cast<float>(scale);
-    return a;
-}
-
 // Per voxel, the mean transmittance to the outside over the 14 lattice directions, mesh boxes dark,
 // and its first moment, the mean of T·d over the same directions.
 struct EnvironmentTransmittance {
@@ -281,17 +251,14 @@ std::vector<glm::vec3> firstScattering(const MediumGrid& original, const Environ
                 const std::size_t v = m.index(x, y, z);
                 if (!(m.sigma[v] > 0.0f)) continue;
                 const glm::dvec3 p = m.min + (glm::dvec3(x, y, z) + 0.5) * m.voxel;
-                // The light's mean over the voxel rather than at its centre (a dense voxel's lit face
-                // scatters most): e^{−τ_c} · 2 sinh(τ_v/2) / τ_v for optical depth τ_v across it.
-                const double half = 0.5 * m.sigma[v] * m.voxel;
-                const double acrossVoxel = half > 1e-4 ? std::sinh(std::min(half, 30.0)) / half : 1.0;
                 glm::vec3 arriving = lighting.ambient * (4.0f * static_cast<float>(kPi) * environment[v]);
                 if (lighting.lights != nullptr)
                     for (const Light& light : *lighting.lights) {
                         const Arrival a = arrival(light, p);
-                        if (!(a.irradiance.x + a.irradiance.y + a.irradiance.z > 0.0f)) continue;
+                        const VoxelLight e = voxelIrradiance(light, p, m.voxel, m.sigma[v], a);
+                        if (!(e.irradiance.x + e.irradiance.y + e.irradiance.z > 0.0f)) continue;
                         if (!meshes.empty() && meetsMesh(p, a.toLight, meshes, a.distance)) continue;
-                        arriving += a.irradiance * static_cast<float>(std::exp(-depthAlong(m, p, a.toLight, a.distance)) * acrossVoxel);
+                        arriving += e.irradiance * static_cast<float>(std::exp(-depthAlong(m, p, a.toLight, a.distance)) * e.scale);
                     }
                 source[v] = keep[v] * m.scattering[v] * arriving + 4.0f * static_cast<float>(kPi) * m.emission[v];  // emission: all directions
             }
