@@ -54,6 +54,16 @@ TEST(VoxelLight, NearALampTheMeanOverTheVoxelFollowsTheFineIntegral) {
     EXPECT_GT(own.irradiance.x, 4.0 / (h * h));
 }
 
+// A lamp inside a voxel of optical depth 10⁴ across: the points nearer the lamp than the centre
+// see far more light than it, and the mean stays finite (the centre's e^{−τ} brings it down).
+TEST(VoxelLight, ALampInAnOpaqueVoxelStaysFinite) {
+    const Light l = lamp(glm::dvec3(0.2, 0.0, 0.0));
+    const glm::dvec3 p(0.0);
+    const VoxelLight v = voxelIrradiance(l, p, 0.5, 2e4, arrival(l, p));
+    EXPECT_TRUE(std::isfinite(v.irradiance.x));
+    EXPECT_GT(v.irradiance.x, 0.0f);
+}
+
 // Two voxels away and more, the centre's value stands (with the mean across the voxel).
 TEST(VoxelLight, FarFromALampTheCentreStands) {
     const Light l = lamp(glm::dvec3(0.0));

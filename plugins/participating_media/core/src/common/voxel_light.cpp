@@ -46,7 +46,9 @@ VoxelLight voxelIrradiance(const Light& light, const glm::dvec3& p, double h, do
     for (int k = 0; k < kSub * kSub * kSub; ++k) {
         const glm::dvec3 at(k % kSub, (k / kSub) % kSub, k / (kSub * kSub));
         const Arrival a = arrival(light, p + ((at + 0.5) / double(kSub) - 0.5) * h);
-        sum += a.irradiance * static_cast<float>(std::exp(-sigma * (a.distance - atCentre.distance)));
+        // Depth relative to the centre's, kept above −30 as the sinh's is: e^30 fits a float, and a
+        // point nearer the lamp in a dense voxel must not overflow it (the centre's e^{−τ} follows).
+        sum += a.irradiance * static_cast<float>(std::exp(-std::max(sigma * (a.distance - atCentre.distance), -30.0)));
     }
     return {sum / static_cast<float>(kSub * kSub * kSub), 1.0};
 }
